@@ -1,0 +1,34 @@
+#pragma once
+// POST /envmaps/{id}/samples body and GET /envmaps/{id}/samples.png query.
+#include <cstdint>
+
+#include "api/params.hpp"
+#include "engine/envmap/luminance.hpp"
+#include "engine/image/image_io.hpp"
+#include "engine/sampling/sample_set.hpp"
+
+namespace lp::api {
+
+struct SampleRequest {
+  SampleSetSpec spec;
+  LuminanceMode luminance = LuminanceMode::Average;
+};
+
+SampleRequest parse_sample_request(const Json& body, int64_t max_samples);
+
+enum class SampleImageStyle { Marks, Windows };
+
+struct SampleImageRequest {
+  SampleRequest samples;
+  SampleImageStyle style = SampleImageStyle::Marks;
+  ToneMap tone;
+};
+
+SampleImageRequest parse_sample_image_query(const Query& q, int64_t max_samples);
+
+// One binary sample record: 13 little-endian float32 values, in this order.
+inline constexpr const char* kSampleRecordLayout =
+    "pixel_x,pixel_y,u,v,dir_x,dir_y,dir_z,theta,phi,pdf,radiance_r,radiance_g,radiance_b";
+inline constexpr int kSampleRecordFloats = 13;
+
+}  // namespace lp::api

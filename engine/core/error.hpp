@@ -1,0 +1,26 @@
+#pragma once
+// One exception type for the engine; `kind` lets a caller (the server) choose a status code.
+#include <stdexcept>
+#include <string>
+
+namespace lp {
+
+enum class ErrorKind {
+  InvalidArgument,  // a parameter is out of range or malformed
+  Unsupported,      // not a format we read
+  Corrupt,          // a format we read, but broken or truncated
+  InvalidData,      // readable, but the values are unusable (NaN, Inf, negative, all zero)
+  TooLarge,         // over a configured limit
+  NotFound,         // a file or resource is missing
+};
+
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  ErrorKind kind() const { return kind_; }
+
+ private:
+  ErrorKind kind_;
+};
+
+}  // namespace lp

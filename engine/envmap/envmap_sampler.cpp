@@ -1,0 +1,67 @@
+#include "engine/envmap/envmap_sampler.hpp"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace lp {
+namespace {
+
+// Pixel weights: luminance * sin(theta of the row centre), so that p(u, v) is proportional to the
+// radiance per solid angle.
+std::vector<float> sampling_weights(const Image& image, LuminanceMode mode) {
+  const int w = image.width(), h = image.height();
+  std::vector<float> weights(size_t(w) * size_t(h));
+  tbb::parallel_for(0, h, [&](int y) {
+    const auto s = float(std::sin(latlong::row_centre_theta(y, h)));
+    const float* row = image.row(y);
+    float* out = &weights[size_t(y) * w];
+    for (int x = 0; x < w; ++x) out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
+  });
+  return weights;
+}
+
+// Solid-angle pdf from the unit-square density: p / (2 pi^2 sin theta). sin theta is clamped away
+// from zero so that samples at the exact pole give a large finite pdf rather than Inf.
+float solid_angle_pdf(float density, float theta) {
+  const float s = std::max(std::sin(theta), 1e-7f);
+  return density / (2.0f * kPiF * kPiF * s);
+}
+
+}  // namespace
+
+EnvMapSampler::EnvMapSampler(const EnvMap& map, LuminanceMode mode)
+    : map_(map), mode_(mode), dist_(sampling_weights(map.image(), mode), map.width(), map.height()) {}
+
+EnvSample EnvMapSampler::finish(const GridSample& g) const {
+  EnvSample s;
+  s.pixel_x = g.x;
+  s.pixel_y = g.y;
+  s.u = float(g.u);
+  s.v = float(g.v);
+  s.theta = float(g.v * kPi);
+  s.phi = float(g.u * 2.0 * kPi);
+  s.direction = latlong::direction_from_angles(s.theta, s.phi);
+  s.pdf = solid_angle_pdf(g.density, s.theta);
+  s.radiance = map_.image().at(g.x, g.y);
+  return s;
+}
+
+EnvSample EnvMapSampler::sample(float u1, float u2) const { return finish(dist_.sample(u1, u2)); }
+
+const AliasTable2D& EnvMapSampler::alias() const {
+  std::call_once(alias_once_, [&] { alias_ = std::make_unique<AliasTable2D>(dist_); });
+  return *alias_;
+}
+
+EnvSample EnvMapSampler::sample_alias(uint64_t r_row, uint64_t r_col, float fu, float fv) const {
+  return finish(alias().sample(r_row, r_col, fu, fv));
+}
+
+float EnvMapSampler::pdf(Vec3 direction) const {
+  const latlong::Uv uv = latlong::uv(direction);
+  const int x = latlong::pixel_x(uv.u, dist_.width()), y = latlong::pixel_y(uv.v, dist_.height());
+  return solid_angle_pdf(dist_.density(x, y), uv.v * kPiF);
+}
+
+}  // namespace lp

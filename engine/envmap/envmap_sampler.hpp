@@ -1,0 +1,50 @@
+#pragma once
+// Importance sampling of an environment map: pixel weights luminance * sin(theta of the row centre),
+// solid-angle pdf = p(u, v) / (2 pi^2 sin theta) with theta of the sample itself.
+#include <cstdint>
+#include <memory>
+#include <mutex>
+
+#include "engine/envmap/envmap.hpp"
+#include "engine/sampling/alias_table_2d.hpp"
+#include "engine/sampling/piecewise_constant_2d.hpp"
+
+namespace lp {
+
+struct EnvSample {
+  int pixel_x = 0, pixel_y = 0;
+  float u = 0, v = 0;
+  Vec3 direction;
+  float theta = 0, phi = 0;
+  float pdf = 0;  // solid-angle density
+  Rgb radiance;   // the radiance of the sampled pixel (the same grid as the pdf)
+};
+
+class EnvMapSampler {
+ public:
+  EnvMapSampler(const EnvMap& map, LuminanceMode mode);
+
+  // Inverse-CDF sample: u1 -> phi (column), u2 -> theta (row). Both in [0, 1).
+  EnvSample sample(float u1, float u2) const;
+  // O(1) alias-table sample from independent random bits (for independent sample sets).
+  EnvSample sample_alias(uint64_t r_row, uint64_t r_col, float fu, float fv) const;
+
+  // Solid-angle pdf of a direction; agrees with sample().pdf.
+  float pdf(Vec3 direction) const;
+
+  const PiecewiseConstant2D& distribution() const { return dist_; }
+  const EnvMap& map() const { return map_; }
+  LuminanceMode mode() const { return mode_; }
+
+ private:
+  EnvSample finish(const GridSample& g) const;
+  const AliasTable2D& alias() const;
+
+  const EnvMap& map_;
+  LuminanceMode mode_;
+  PiecewiseConstant2D dist_;
+  mutable std::once_flag alias_once_;
+  mutable std::unique_ptr<AliasTable2D> alias_;
+};
+
+}  // namespace lp

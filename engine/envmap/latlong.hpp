@@ -1,0 +1,47 @@
+#pragma once
+// Lat-long conventions (DEVELOPERS.md): z up; pixel (x, y) has centre u = (x + 0.5)/W, v = (y + 0.5)/H,
+// row 0 at the top; theta = v*pi from +z, phi = u*2*pi;
+// direction = (sin theta cos phi, sin theta sin phi, cos theta).
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/constants.hpp"
+#include "engine/core/vec3.hpp"
+
+namespace lp::latlong {
+
+struct Uv {
+  float u = 0, v = 0;
+};
+
+inline Vec3 direction_from_angles(float theta, float phi) {
+  const float s = std::sin(theta);
+  return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
+}
+
+inline Vec3 direction(Uv uv) { return direction_from_angles(uv.v * kPiF, uv.u * 2.0f * kPiF); }
+
+// u in [0, 1), v in [0, 1]; `d` need not be normalised.
+inline Uv uv(Vec3 d) {
+  // atan2 keeps full precision near the poles, where acos(z) loses it.
+  const float theta = std::atan2(std::hypot(d.x, d.y), d.z);
+  float phi = std::atan2(d.y, d.x);
+  if (phi < 0) phi += 2.0f * kPiF;
+  float u = phi / (2.0f * kPiF);
+  if (u >= 1.0f) u = 0.0f;
+  return {u, theta / kPiF};
+}
+
+// The pixel containing (u, v), clamped to the grid.
+inline int pixel_x(float u, int width) { return std::clamp(int(u * float(width)), 0, width - 1); }
+inline int pixel_y(float v, int height) { return std::clamp(int(v * float(height)), 0, height - 1); }
+
+// Exact solid angle of one pixel of row y: (2 pi / W) * (cos theta_top - cos theta_bottom).
+inline double pixel_solid_angle(int y, int width, int height) {
+  const double t0 = kPi * y / height, t1 = kPi * (y + 1) / height;
+  return (2.0 * kPi / width) * (std::cos(t0) - std::cos(t1));
+}
+
+inline double row_centre_theta(int y, int height) { return kPi * (y + 0.5) / height; }
+
+}  // namespace lp::latlong

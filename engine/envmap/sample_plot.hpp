@@ -1,0 +1,17 @@
+#pragma once
+// Pictures of where samples fell (the seed's figures 6 and 7), as 8-bit RGB the size of the map.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/envmap/envmap_sampler.hpp"
+#include "engine/image/image_io.hpp"
+
+namespace lp {
+
+// The tone-mapped map with a 5x5 pure-blue square centred on each sampled pixel.
+std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone);
+// Black except a 5x5 window of the map's own radiance around each sample, then tone mapped.
+std::vector<uint8_t> plot_sample_windows(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone);
+
+}  // namespace lp

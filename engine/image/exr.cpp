@@ -1,0 +1,122 @@
+// OpenEXR through the OpenEXR library, from and to memory: any compression it supports,
+// scanline or tiled, RGB(A) or Y channels.
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfThreading.h>
+
+#include <algorithm>
+#include <cstring>
+#include <mutex>
+#include <thread>
+
+#include "engine/image/image_limits.hpp"
+
+namespace lp {
+namespace {
+
+class MemoryIStream : public Imf::IStream {
+ public:
+  explicit MemoryIStream(std::span<const uint8_t> b) : Imf::IStream("memory"), b_(b) {}
+  bool read(char c[], int n) override {
+    if (n < 0 || pos_ + uint64_t(n) > b_.size()) throw Iex::InputExc("unexpected end of file");
+    std::memcpy(c, b_.data() + pos_, size_t(n));
+    pos_ += uint64_t(n);
+    return pos_ < b_.size();
+  }
+  uint64_t tellg() override { return pos_; }
+  void seekg(uint64_t pos) override { pos_ = std::min<uint64_t>(pos, b_.size()); }
+  void clear() override {}
+
+ private:
+  std::span<const uint8_t> b_;
+  uint64_t pos_ = 0;
+};
+
+class MemoryOStream : public Imf::OStream {
+ public:
+  MemoryOStream() : Imf::OStream("memory") {}
+  void write(const char c[], int n) override {
+    if (pos_ + size_t(n) > out_.size()) out_.resize(pos_ + size_t(n));
+    std::memcpy(out_.data() + pos_, c, size_t(n));
+    pos_ += size_t(n);
+  }
+  uint64_t tellp() override { return pos_; }
+  void seekp(uint64_t pos) override { pos_ = pos; }
+  std::vector<uint8_t> take() { return std::move(out_); }
+
+ private:
+  std::vector<uint8_t> out_;
+  size_t pos_ = 0;
+};
+
+void enable_exr_threads() {
+  static std::once_flag once;
+  std::call_once(once, [] { Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency()))); });
+}
+
+// The channel names to read into R, G, B: "R","G","B", or "Y" for all three.
+std::array<const char*, 3> pick_channels(const Imf::ChannelList& channels) {
+  if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) return {"R", "G", "B"};
+  if (channels.findChannel("Y")) return {"Y", "Y", "Y"};
+  throw Error(ErrorKind::Unsupported, "OpenEXR file has neither R, G, B nor Y channels");
+}
+
+}  // namespace
+
+Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
+  enable_exr_threads();
+  try {
+    MemoryIStream stream(bytes);
+    Imf::InputFile file(stream);
+    const Imath::Box2i window = file.header().dataWindow();
+    const int64_t width = int64_t{window.max.x} - window.min.x + 1;
+    const int64_t height = int64_t{window.max.y} - window.min.y + 1;
+    check_image_size(width, height, limits);
+    const auto names = pick_channels(file.header().channels());
+
+    Image image(static_cast<int>(width), static_cast<int>(height));
+    float* base = image.data().data() - (int64_t{window.min.x} + int64_t{window.min.y} * width) * 3;
+    const bool grey = names[0] == names[1];
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < (grey ? 1 : 3); ++c)
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base + c), sizeof(float) * 3,
+                                     sizeof(float) * 3 * size_t(width)));
+    file.setFrameBuffer(fb);
+    file.readPixels(window.min.y, window.max.y);
+    if (grey) {
+      auto d = image.data();
+      for (size_t i = 0; i < d.size(); i += 3) d[i + 1] = d[i + 2] = d[i];
+    }
+    return image;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(ErrorKind::Corrupt, std::string("cannot read OpenEXR data: ") + e.what());
+  }
+}
+
+std::vector<uint8_t> write_exr(const Image& image) {
+  enable_exr_threads();
+  Imf::Header header(image.width(), image.height());
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  MemoryOStream stream;
+  {
+    Imf::OutputFile file(stream, header);
+    Imf::FrameBuffer fb;
+    const char* names[] = {"R", "G", "B"};
+    auto* base = const_cast<float*>(image.data().data());
+    for (int c = 0; c < 3; ++c)
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base + c), sizeof(float) * 3,
+                                     sizeof(float) * 3 * size_t(image.width())));
+    file.setFrameBuffer(fb);
+    file.writePixels(image.height());
+  }
+  return stream.take();
+}
+
+}  // namespace lp

@@ -1,0 +1,69 @@
+#pragma once
+// Reading and writing images. Readers detect the format from the magic bytes, check sizes against
+// limits before allocating, and reject NaN, Inf and negative pixels (see sanitize_radiance).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/image/image.hpp"
+
+namespace lp {
+
+enum class ImageFormat { Exr, Pfm, Hdr, Png };
+
+const char* format_name(ImageFormat f);                  // "exr", "pfm", "hdr", "png"
+std::optional<ImageFormat> parse_format(const std::string& name);  // inverse of format_name
+const char* format_mime_type(ImageFormat f);
+
+struct ImageLimits {
+  int64_t max_pixels = int64_t{8192} * 8192;
+  int max_dimension = 65536;
+};
+
+// The format from the first bytes, or nullopt if none we read.
+std::optional<ImageFormat> detect_format(std::span<const uint8_t> bytes);
+
+struct DecodedImage {
+  Image image;
+  ImageFormat format;
+  size_t clamped_negatives = 0;  // see sanitize_radiance
+};
+
+// Throws lp::Error: Unsupported (unknown magic), Corrupt, TooLarge, InvalidData.
+DecodedImage read_image(std::span<const uint8_t> bytes, const ImageLimits& limits = {});
+DecodedImage read_image_file(const std::filesystem::path& path, const ImageLimits& limits = {});
+
+// Per-format readers (the bytes must be of that format).
+Image read_pfm(std::span<const uint8_t> bytes, const ImageLimits& limits);
+Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits);
+Image read_hdr(std::span<const uint8_t> bytes, const ImageLimits& limits);
+
+// Preview settings for 8-bit output: scale by 2^exposure, then gamma (nullopt = the sRGB curve).
+struct ToneMap {
+  float exposure = 0.0f;
+  std::optional<float> gamma;
+};
+
+std::vector<uint8_t> write_exr(const Image& image);  // 32-bit float RGB, ZIP compression
+std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
+std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
+std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB
+std::vector<uint8_t> write_image(const Image& image, ImageFormat format, const ToneMap& tone = {});
+
+// 8-bit previews that draw on top of the tone-mapped image: tone map, paint, then encode.
+std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone);  // w * h * 3 bytes
+std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb8, int width, int height);
+
+void write_file(const std::filesystem::path& path, std::span<const uint8_t> bytes);
+
+// Checks every value is finite and non-negative; throws InvalidData naming the first bad pixel.
+// Lossy codecs (OpenEXR's DWA, B44) leave tiny negative values in real maps, e.g. -0.004 where the
+// mean is 0.47 in Blender's own sunrise.exr; negatives no larger than kNegativeTolerance times the
+// mean value are clamped to zero instead, and their count returned.
+inline constexpr double kNegativeTolerance = 0.02;
+size_t sanitize_radiance(Image& image);
+
+}  // namespace lp

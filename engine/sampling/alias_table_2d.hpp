@@ -1,0 +1,33 @@
+#pragma once
+// O(1) sampling of the cells of a piecewise-constant 2D density (Walker/Vose alias method), two
+// levels: an alias table over rows, then one per row over its columns. Not monotone: use it for
+// independent random samples, the inverse CDF for stratified and low-discrepancy ones.
+#include <cstdint>
+#include <vector>
+
+#include "engine/sampling/piecewise_constant_2d.hpp"
+
+namespace lp {
+
+class AliasTable2D {
+ public:
+  explicit AliasTable2D(const PiecewiseConstant2D& dist);
+
+  // r_row and r_col are independent uniform 64-bit integers; (fu, fv) the offsets within the cell.
+  GridSample sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const;
+
+ private:
+  struct Entry {
+    float threshold;  // keep this index if the uniform is below it, else take `alias`
+    uint32_t alias;
+  };
+  static void build(const double* weights, int n, Entry* out);
+  static uint32_t pick(const Entry* table, int n, uint64_t r);
+
+  const PiecewiseConstant2D& dist_;
+  int width_, height_;
+  std::vector<Entry> rows_;     // height
+  std::vector<Entry> columns_;  // height * width
+};
+
+}  // namespace lp

@@ -1,0 +1,46 @@
+#pragma once
+// A piecewise-constant density over the unit square on a W x H grid of non-negative weights:
+// a marginal distribution over rows and a conditional distribution over the columns of each row,
+// sampled by inverting the CDFs (monotone, so stratified and low-discrepancy points stay so).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace lp {
+
+struct GridSample {
+  int x = 0, y = 0;        // the cell
+  double u = 0, v = 0;     // continuous position in [0, 1)^2 (u across columns, v down rows)
+  float density = 0;       // density on the unit square: weight / mean weight
+};
+
+class PiecewiseConstant2D {
+ public:
+  // `weights` is row-major, width * height. Throws lp::Error(InvalidData) if all are zero.
+  PiecewiseConstant2D(std::span<const float> weights, int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // u1 picks the column within the row, u2 picks the row. Both in [0, 1).
+  GridSample sample(float u1, float u2) const;
+  float density(int x, int y) const { return density_[size_t(y) * width_ + x]; }
+
+  // Row probabilities (sum 1) and the marginal CDF (height + 1 entries, 0 .. 1).
+  std::span<const float> marginal_cdf() const { return marginal_cdf_; }
+  double row_probability(int y) const { return double(marginal_cdf_[y + 1]) - marginal_cdf_[y]; }
+  std::span<const double> row_weight_sums() const { return row_sums_; }
+  double total_weight() const { return total_; }
+
+ private:
+  const float* conditional_cdf(int y) const { return &conditional_cdf_[size_t(y) * (width_ + 1)]; }
+
+  int width_, height_;
+  double total_ = 0;
+  std::vector<double> row_sums_;
+  std::vector<float> marginal_cdf_;     // height + 1
+  std::vector<float> conditional_cdf_;  // height * (width + 1)
+  std::vector<float> density_;          // width * height
+};
+
+}  // namespace lp

@@ -1,0 +1,29 @@
+#include "server/data_dir.hpp"
+
+#include "api/api_error.hpp"
+
+namespace lp::server {
+
+namespace fs = std::filesystem;
+
+fs::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field) {
+  if (!options.data_dir) throw api::invalid_field(field, "the server was started without --data-dir; paths are not accepted");
+  if (relative.empty()) throw api::invalid_field(field, "must not be empty");
+  if (relative.find('\0') != std::string::npos) throw api::invalid_field(field, "must not contain NUL");
+  const fs::path rel(relative);
+  if (rel.is_absolute() || rel.has_root_name() || rel.has_root_directory())
+    throw api::invalid_field(field, "must be relative to the data directory, not absolute");
+  for (const auto& part : rel)
+    if (part == "..") throw api::invalid_field(field, "must not contain '..'");
+  std::error_code ec;
+  const fs::path root = fs::canonical(*options.data_dir, ec);
+  if (ec) throw api::ApiError(500, "internal", "the data directory is not accessible");
+  const fs::path full = fs::weakly_canonical(root / rel, ec);
+  if (ec) throw api::invalid_field(field, "cannot be resolved");
+  const auto [root_end, full_it] = std::mismatch(root.begin(), root.end(), full.begin(), full.end());
+  if (root_end != root.end()) throw api::invalid_field(field, "resolves outside the data directory");
+  if (!fs::is_regular_file(full, ec)) throw api::not_found("no file '" + relative + "' in the data directory");
+  return full;
+}
+
+}  // namespace lp::server

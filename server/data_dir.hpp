@@ -1,0 +1,15 @@
+#pragma once
+// Files named in requests (maps, meshes) come only from inside --data-dir.
+#include <filesystem>
+#include <string>
+
+#include "server/options.hpp"
+
+namespace lp::server {
+
+// Resolves `relative` inside the data dir. Throws ApiError 400 naming `field` if there is no data
+// dir, the path is absolute, has a ".." component, or resolves (through links) outside the dir;
+// 404 if the file does not exist.
+std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field);
+
+}  // namespace lp::server

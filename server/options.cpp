@@ -1,0 +1,123 @@
+#include "server/options.hpp"
+
+#include <cstdlib>
+#include <iostream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lp::server {
+namespace {
+
+constexpr const char* kUsage = R"(lightprobe-server: image-based lighting over HTTP/JSON
+
+Usage: lightprobe-server [options]
+
+  --host ADDR            address to listen on (default 127.0.0.1)
+  --port N               port (default 8080; 0 picks a free port, printed on start)
+  --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
+  --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
+  --threads N            worker threads for computation (default: all cores)
+  --max-upload-mb N      largest request body in MiB (default 512)
+  --max-pixels N         largest map in pixels (default 33554432 = 8192 x 4096)
+  --max-samples N        most samples per request (default 10000000)
+  --max-envmaps N        most maps held at once (default 64)
+  --max-lights N         most median-cut lights per request (default 65536)
+  --max-render-width N   widest render in pixels (default 4096)
+  --max-render-height N  tallest render in pixels (default 4096)
+  --max-render-spp N     most samples per pixel of a render (default 65536)
+  --max-render-depth N   largest max_depth (path bounces) of a render (default 64)
+  --max-render-objects N most objects in a render's scene (default 256)
+  --max-mesh-triangles N most triangles in one mesh of a render (default 2000000)
+  --max-running-jobs N   renders running at once, each in its own thread arena (default 2)
+  --max-queued-jobs N    renders waiting to run; a full queue answers 503 (default 16)
+  --max-finished-jobs N  finished renders kept with their images, oldest dropped (default 64)
+  --max-finished-mb N    MiB of images kept by finished renders, oldest dropped (default 1024)
+  --max-event-streams N  concurrent render event streams (default 8)
+  --list-routes          print every registered route (METHOD PATH) and exit
+  --version              print the version and exit
+  --help                 print this help and exit
+)";
+
+int64_t parse_count(const std::string& flag, const std::string& value, int64_t min, int64_t max) {
+  try {
+    size_t used = 0;
+    const long long v = std::stoll(value, &used);
+    if (used == value.size() && v >= min && v <= max) return v;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument(fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, min, max, value));
+}
+
+}  // namespace
+
+std::optional<Options> parse_options(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(flag + " needs a value");
+      return argv[++i];
+    };
+    if (flag == "--help" || flag == "-h") {
+      std::cout << kUsage;
+      return std::nullopt;
+    } else if (flag == "--version") {
+      std::cout << "lightprobe-server " << LIGHTPROBE_VERSION << "\n";
+      return std::nullopt;
+    } else if (flag == "--list-routes") {
+      o.list_routes = true;
+    } else if (flag == "--host") {
+      o.host = value();
+    } else if (flag == "--port") {
+      o.port = int(parse_count(flag, value(), 0, 65535));
+    } else if (flag == "--data-dir") {
+      o.data_dir = value();
+    } else if (flag == "--load") {
+      const std::string v = value();
+      const auto eq = v.find('=');
+      if (eq == std::string::npos || eq == 0 || eq + 1 == v.size())
+        throw std::invalid_argument("--load takes NAME=PATH, got '" + v + "'");
+      o.loads.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+    } else if (flag == "--threads") {
+      o.threads = int(parse_count(flag, value(), 1, 1024));
+    } else if (flag == "--max-upload-mb") {
+      o.max_upload_mb = parse_count(flag, value(), 1, 1 << 20);
+    } else if (flag == "--max-pixels") {
+      o.max_pixels = parse_count(flag, value(), 1, int64_t{1} << 34);
+    } else if (flag == "--max-samples") {
+      o.max_samples = parse_count(flag, value(), 1, int64_t{1} << 32);
+    } else if (flag == "--max-envmaps") {
+      o.max_envmaps = parse_count(flag, value(), 1, 100000);
+    } else if (flag == "--max-lights") {
+      o.max_lights = parse_count(flag, value(), 1, int64_t{1} << 24);
+    } else if (flag == "--max-render-width") {
+      o.max_render_width = int(parse_count(flag, value(), 1, 65536));
+    } else if (flag == "--max-render-height") {
+      o.max_render_height = int(parse_count(flag, value(), 1, 65536));
+    } else if (flag == "--max-render-spp") {
+      o.max_render_spp = int(parse_count(flag, value(), 1, 1 << 24));
+    } else if (flag == "--max-render-depth") {
+      o.max_render_depth = int(parse_count(flag, value(), 0, 1024));
+    } else if (flag == "--max-render-objects") {
+      o.max_render_objects = int(parse_count(flag, value(), 0, 1 << 20));
+    } else if (flag == "--max-mesh-triangles") {
+      o.max_mesh_triangles = parse_count(flag, value(), 1, int64_t{1} << 32);
+    } else if (flag == "--max-running-jobs") {
+      o.max_running_jobs = int(parse_count(flag, value(), 1, 256));
+    } else if (flag == "--max-queued-jobs") {
+      o.max_queued_jobs = int(parse_count(flag, value(), 0, 1 << 20));
+    } else if (flag == "--max-finished-jobs") {
+      o.max_finished_jobs = int(parse_count(flag, value(), 1, 1 << 20));
+    } else if (flag == "--max-finished-mb") {
+      o.max_finished_mb = parse_count(flag, value(), 1, 1 << 24);
+    } else if (flag == "--max-event-streams") {
+      o.max_event_streams = int(parse_count(flag, value(), 0, 4096));
+    } else {
+      throw std::invalid_argument("unknown option '" + flag + "' (see --help)");
+    }
+  }
+  return o;
+}
+
+}  // namespace lp::server

@@ -1,0 +1,42 @@
+#pragma once
+// Command-line options of lightprobe-server.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lp::server {
+
+struct Options {
+  std::string host = "127.0.0.1";
+  int port = 8080;  // 0 = any free port (printed on start)
+  std::optional<std::filesystem::path> data_dir;
+  std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
+  int threads = 0;                                         // 0 = all cores
+  int64_t max_upload_mb = 512;
+  int64_t max_pixels = int64_t{8192} * 4096;
+  int64_t max_samples = 10'000'000;
+  int64_t max_envmaps = 64;
+  int64_t max_lights = 65536;
+  bool list_routes = false;  // print "METHOD PATH" per registered route and exit
+  // Renders (POST /api/v1/renders).
+  int max_render_width = 4096;
+  int max_render_height = 4096;
+  int max_render_spp = 65536;
+  int max_render_depth = 64;
+  int max_render_objects = 256;
+  int64_t max_mesh_triangles = 2'000'000;
+  int max_running_jobs = 2;
+  int max_queued_jobs = 16;
+  int max_finished_jobs = 64;
+  int64_t max_finished_mb = 1024;  // images kept by finished jobs
+  int max_event_streams = 8;       // concurrent GET .../events streams (each holds an HTTP worker)
+};
+
+// Parses argv. Returns nullopt after printing --help or --version (exit 0); throws
+// std::invalid_argument with a message for a bad flag (exit 2).
+std::optional<Options> parse_options(int argc, char** argv);
+
+}  // namespace lp::server

@@ -1,0 +1,121 @@
+#include "server/router.hpp"
+
+#include <regex>
+
+#include <spdlog/spdlog.h>
+
+#include "api/api_error.hpp"
+#include "engine/core/error.hpp"
+
+namespace lp::server {
+namespace {
+
+// "/api/v1/envmaps/{id}/image" -> "/api/v1/envmaps/([^/]+)/image" (other characters escaped).
+std::string to_regex(const std::string& path) {
+  static const std::regex param(R"(\{[^}/]+\})");
+  std::string out;
+  size_t last = 0;
+  for (std::sregex_iterator it(path.begin(), path.end(), param), end; it != end; ++it) {
+    out += std::regex_replace(path.substr(last, size_t(it->position()) - last), std::regex(R"([.^$|()\[\]*+?\\])"), R"(\$&)");
+    out += "([^/]+)";
+    last = size_t(it->position() + it->length());
+  }
+  out += std::regex_replace(path.substr(last), std::regex(R"([.^$|()\[\]*+?\\])"), R"(\$&)");
+  return out;
+}
+
+int status_for(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::InvalidArgument: return 400;
+    case ErrorKind::Unsupported: return 415;
+    case ErrorKind::Corrupt: return 422;
+    case ErrorKind::InvalidData: return 422;
+    case ErrorKind::TooLarge: return 413;
+    case ErrorKind::NotFound: return 404;
+  }
+  return 500;
+}
+
+const char* code_for(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::InvalidArgument: return "invalid_argument";
+    case ErrorKind::Unsupported: return "unsupported_media_type";
+    case ErrorKind::Corrupt: return "corrupt_image";
+    case ErrorKind::InvalidData: return "invalid_image_data";
+    case ErrorKind::TooLarge: return "too_large";
+    case ErrorKind::NotFound: return "not_found";
+  }
+  return "internal";
+}
+
+Handler guarded(Handler handler) {
+  return [handler = std::move(handler)](const httplib::Request& req, httplib::Response& res) {
+    try {
+      handler(req, res);
+    } catch (const api::ApiError& e) {
+      send_error(res, e.status(), e.code(), e.what());
+    } catch (const Error& e) {
+      send_error(res, status_for(e.kind()), code_for(e.kind()), e.what());
+    } catch (const std::bad_alloc&) {
+      spdlog::error("{} {}: out of memory", req.method, req.path);
+      send_error(res, 507, "insufficient_storage", "the server ran out of memory for this request");
+    } catch (const std::exception& e) {
+      spdlog::error("{} {}: {}", req.method, req.path, e.what());
+      send_error(res, 500, "internal", e.what());
+    }
+  };
+}
+
+// POST bodies are read through a content reader: httplib's default path caps bodies sent as
+// application/x-www-form-urlencoded (curl's default for -d and --data-binary) at 8 KiB and parses
+// them as forms, which would refuse an image uploaded with a plain `curl --data-binary @map.exr`.
+httplib::Server::HandlerWithContentReader with_body(Handler handler) {
+  return [handler = guarded(std::move(handler))](const httplib::Request& req, httplib::Response& res,
+                                                 const httplib::ContentReader& reader) {
+    if (req.is_multipart_form_data()) {
+      send_error(res, 415, "unsupported_media_type", "send the file as the raw request body, not as multipart/form-data");
+      return;
+    }
+    httplib::Request with = req;
+    const bool complete = reader([&](const char* data, size_t n) {
+      with.body.append(data, n);
+      return true;
+    });
+    if (!complete) {
+      if (res.status == 413) send_error(res, 413, "payload_too_large", "the request body is over the server's limit (--max-upload-mb)");
+      else send_error(res, 400, "bad_request", "the request body could not be read");
+      return;
+    }
+    handler(with, res);
+  };
+}
+
+}  // namespace
+
+void Router::add(const std::string& method, const std::string& path, Handler handler) {
+  routes_.push_back({method, path});
+  const std::string pattern = to_regex(path);
+  if (method == "GET") server_.Get(pattern, guarded(std::move(handler)));
+  else if (method == "POST") server_.Post(pattern, with_body(std::move(handler)));
+  else if (method == "DELETE") server_.Delete(pattern, guarded(std::move(handler)));
+}
+
+void Router::get(const std::string& path, Handler handler) { add("GET", path, std::move(handler)); }
+void Router::post(const std::string& path, Handler handler) { add("POST", path, std::move(handler)); }
+void Router::del(const std::string& path, Handler handler) { add("DELETE", path, std::move(handler)); }
+
+std::string path_param(const httplib::Request& req, size_t n) {
+  if (n >= req.matches.size()) throw api::ApiError(500, "internal", "missing path parameter");
+  return req.matches[n].str();
+}
+
+void send_json(httplib::Response& res, const nlohmann::json& body, int status) {
+  res.status = status;
+  res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
+}
+
+void send_error(httplib::Response& res, int status, const std::string& code, const std::string& message) {
+  send_json(res, {{"error", {{"code", code}, {"message", message}}}}, status);
+}
+
+}  // namespace lp::server

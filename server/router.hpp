@@ -1,0 +1,45 @@
+#pragma once
+// Registers handlers on the httplib server under OpenAPI-style paths ("/api/v1/envmaps/{id}"),
+// keeps the list of routes (checked against api/openapi.yaml by a test), and turns every exception
+// into a JSON error response so that no request can take the server down.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+namespace lp::server {
+
+struct Route {
+  std::string method;
+  std::string path;  // OpenAPI form
+};
+
+using Handler = std::function<void(const httplib::Request&, httplib::Response&)>;
+
+class Router {
+ public:
+  explicit Router(httplib::Server& server) : server_(server) {}
+
+  void get(const std::string& path, Handler handler);
+  void post(const std::string& path, Handler handler);
+  void del(const std::string& path, Handler handler);
+
+  const std::vector<Route>& routes() const { return routes_; }
+
+ private:
+  void add(const std::string& method, const std::string& path, Handler handler);
+
+  httplib::Server& server_;
+  std::vector<Route> routes_;
+};
+
+// Path parameter n (1-based, in order of appearance) of a route registered with {name} segments.
+std::string path_param(const httplib::Request& req, size_t n);
+
+// Writes {"error":{"code":..,"message":..}} with the status.
+void send_error(httplib::Response& res, int status, const std::string& code, const std::string& message);
+void send_json(httplib::Response& res, const nlohmann::json& body, int status = 200);
+
+}  // namespace lp::server

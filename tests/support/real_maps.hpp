@@ -1,0 +1,12 @@
+#pragma once
+// Real maps from ../shared/data, loaded once per test binary.
+#include <memory>
+#include <string>
+
+#include "engine/envmap/envmap.hpp"
+
+namespace lp::test {
+
+std::shared_ptr<const EnvMap> real_map(const std::string& file);  // cached by file name
+
+}  // namespace lp::test

@@ -1,0 +1,28 @@
+#include "support/test_data.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace lp::test {
+
+std::filesystem::path shared_data() { return LIGHTPROBE_SHARED_DATA; }
+
+std::filesystem::path envmap_path(const std::string& file) { return shared_data() / "envmaps" / file; }
+
+std::vector<std::string> real_envmap_files() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(shared_data() / "envmaps"))
+    if (e.is_regular_file()) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open " + path.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace lp::test

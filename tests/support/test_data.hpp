@@ -1,0 +1,14 @@
+#pragma once
+// Where the shared test data lives (../shared/data beside the repository).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lp::test {
+
+std::filesystem::path shared_data();                 // ../shared/data
+std::filesystem::path envmap_path(const std::string& file);  // ../shared/data/envmaps/<file>
+std::vector<std::string> real_envmap_files();        // every file in ../shared/data/envmaps
+std::vector<uint8_t> read_bytes(const std::filesystem::path& path);
+
+}  // namespace lp::test
