@@ -1,0 +1,34 @@
+#pragma once
+// GET /api/v1/fresnel query: a dielectric pair (eta_i, eta_t) or a conductor (metal=NAME, or eta and k
+// for all three channels) seen from a medium eta_i; the angle step and the output format.
+#include <optional>
+#include <string>
+
+#include "api/params.hpp"
+#include "engine/fresnel/metals.hpp"
+
+namespace lp::api {
+
+struct ConductorSpec {
+  std::optional<std::string> metal;  // the preset the values came from, if any
+  Rgb64 eta{}, k{};
+};
+
+struct FresnelRequest {
+  double eta_i = 1.0;                      // outside / incident medium (default: air)
+  double eta_t = 1.0;                      // dielectric tables only
+  std::optional<ConductorSpec> conductor;  // set for conductor tables
+  double step = 1.0;                       // degrees
+  bool csv = false;
+};
+
+// Indices (eta_i, eta_t, eta) lie in [kMinIndex, kMaxIndex]; k in [0, kMaxIndex]; step in [kMinStep, 90].
+inline constexpr double kMinIndex = 1e-3;
+inline constexpr double kMaxIndex = 1000.0;
+inline constexpr double kMinStep = 0.01;
+
+// Throws ApiError 400 "invalid_field" naming the parameter: unknown or repeated, missing, not a finite
+// number, out of range, an unknown metal, or a mix of dielectric and conductor parameters.
+FresnelRequest parse_fresnel_query(const Query& q);
+
+}  // namespace lp::api
