@@ -1,0 +1,85 @@
+#include "engine/mediancut/median_cut.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "engine/mediancut/median_cut_cache.hpp"
+#include "engine/mediancut/subdivision.hpp"
+
+namespace lp {
+
+const char* split_rule_name(SplitRule r) { return r == SplitRule::Median ? "median" : "variance"; }
+
+std::optional<SplitRule> parse_split_rule(std::string_view s) {
+  if (s == "median") return SplitRule::Median;
+  if (s == "variance") return SplitRule::Variance;
+  return std::nullopt;
+}
+
+std::string MedianCutParams::key() const {
+  return fmt::format("count={};placement={};split={};luminance={}", count, light_placement_name(placement),
+                     split_rule_name(split), luminance_mode_name(luminance));
+}
+
+SplitTables build_split_tables(const Image& image, LuminanceMode mode, SplitRule rule) {
+  SplitTables t;
+  t.weight = std::make_shared<const SummedAreaTable>(build_weight_table(image, mode));
+  if (rule == SplitRule::Variance) t.moments = std::make_shared<const MomentTables>(build_moment_tables(image, mode));
+  return t;
+}
+
+SplitTables split_tables(const EnvMap& map, LuminanceMode mode, SplitRule rule) {
+  const std::string name = luminance_mode_name(mode);
+  SplitTables t;
+  t.weight = map.derived<SummedAreaTable>("sat:" + name, [&] {
+    return std::make_shared<const SummedAreaTable>(build_weight_table(map.image(), mode));
+  });
+  if (rule == SplitRule::Variance)
+    t.moments = map.derived<MomentTables>("sat_moments:" + name, [&] {
+      return std::make_shared<const MomentTables>(build_moment_tables(map.image(), mode));
+    });
+  return t;
+}
+
+MedianCutResult median_cut(const Image& image, const MedianCutParams& params, const SplitTables& tables) {
+  const auto start = std::chrono::steady_clock::now();
+  const RegionSplitter splitter(*tables.weight, tables.moments.get(), params.split);
+  const auto regions = subdivide(splitter, image.width(), image.height(), params.count);
+
+  MedianCutResult result;
+  result.params = params;
+  result.lights = place_lights(image, regions, params.placement, params.luminance);
+  result.energy_min = result.lights.front().energy;
+  result.energy_max = result.lights.front().energy;
+  for (const auto& light : result.lights) {
+    for (int c = 0; c < 3; ++c) result.power[c] += light.power[c];
+    result.energy_min = std::min(result.energy_min, light.energy);
+    result.energy_max = std::max(result.energy_max, light.energy);
+  }
+  result.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+MedianCutResult median_cut(const EnvMap& map, const MedianCutParams& params) {
+  const auto start = std::chrono::steady_clock::now();
+  MedianCutResult result = median_cut(map.image(), params, split_tables(map, params.luminance, params.split));
+  result.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::shared_ptr<const MedianCutResult> median_cut_cached(const EnvMap& map, const MedianCutParams& params,
+                                                         bool* hit) {
+  const auto cache =
+      map.derived<MedianCutCache>("median_cut:results", [] { return std::make_shared<const MedianCutCache>(); });
+  const std::string key = params.key();
+  auto result = cache->find(key);
+  if (hit) *hit = result != nullptr;
+  if (result) return result;
+  result = std::make_shared<const MedianCutResult>(median_cut(map, params));
+  cache->store(key, result);
+  return result;
+}
+
+}  // namespace lp

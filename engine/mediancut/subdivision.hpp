@@ -1,0 +1,17 @@
+#pragma once
+// Recursive subdivision of the whole map into `count` regions.
+// A power of two is Debevec's classic scheme: every region is cut, level after level, k times.
+// Any other count cuts the region with the most energy next (ties: the one with more pixels).
+// Regions of one pixel are never cut; if that leaves a level short, the most energetic splittable
+// regions are cut until there are `count` (possible whenever count <= the number of pixels).
+#include <vector>
+
+#include "engine/mediancut/region.hpp"
+#include "engine/mediancut/region_splitter.hpp"
+
+namespace lp {
+
+// Throws lp::Error(InvalidArgument) if count < 1 or count exceeds the number of pixels.
+std::vector<Region> subdivide(const RegionSplitter& splitter, int width, int height, int count);
+
+}  // namespace lp
