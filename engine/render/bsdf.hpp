@@ -1,0 +1,44 @@
+#pragma once
+// Scattering at a surface, in the local shading frame (z = normal; both directions point away from the
+// surface). Every BSDF samples, evaluates and gives a pdf, and the three agree: for a non-delta sample,
+// weight == eval(wo, wi) / pdf(wo, wi). Radiance transport: a camera path carries radiance, so a
+// transmission scales by 1 / eta^2 (radiance is compressed entering a denser medium).
+#include <memory>
+#include <optional>
+
+#include "engine/core/vec3.hpp"
+#include "engine/render/path_sampler.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::render {
+
+struct BsdfSample {
+  Vec3 wi;
+  Rgb weight;          // f(wo, wi) |cos wi| / pdf
+  float pdf = 0;       // solid-angle pdf; for a delta lobe, the probability of having chosen it
+  float eta = 1;       // eta_t / eta_i when the sample crosses the surface, else 1
+  bool delta = false;  // a specular lobe: eval() and pdf() do not contain it
+};
+
+class Bsdf {
+ public:
+  virtual ~Bsdf() = default;
+
+  // f(wo, wi) |cos wi| of the non-delta lobes.
+  virtual Rgb eval(Vec3 wo, Vec3 wi) const = 0;
+  // Solid-angle density with which sample() returns wi among its non-delta lobes.
+  virtual float pdf(Vec3 wo, Vec3 wi) const = 0;
+  // u_lobe chooses among lobes, u the direction within one.
+  virtual std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const = 0;
+
+  // False if every lobe is delta (light sampling is then useless).
+  virtual bool has_smooth_part() const = 0;
+  // True: a reflector that looks the same from both sides (the caller flips the normal towards wo).
+  // False: the BSDF distinguishes the outside (z > 0) from the inside (a dielectric).
+  virtual bool two_sided() const { return true; }
+};
+
+// Throws lp::Error(InvalidArgument) for out-of-range parameters.
+std::unique_ptr<Bsdf> make_bsdf(const Material& material);
+
+}  // namespace lp::render

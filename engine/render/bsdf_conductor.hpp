@@ -1,0 +1,25 @@
+#pragma once
+// A metal: complex index eta + i k per RGB channel (engine/fresnel), smooth (a delta lobe) when the
+// roughness is 0, otherwise GGX microfacet reflection with visible-normal sampling.
+#include "engine/render/bsdf.hpp"
+#include "engine/render/microfacet.hpp"
+
+namespace lp::render {
+
+class ConductorBsdf final : public Bsdf {
+ public:
+  ConductorBsdf(Rgb eta, Rgb k, float roughness);
+  Rgb eval(Vec3 wo, Vec3 wi) const override;
+  float pdf(Vec3 wo, Vec3 wi) const override;
+  std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
+  bool has_smooth_part() const override { return !smooth_; }
+
+ private:
+  Rgb fresnel(float cos_i) const;
+
+  Rgb eta_, k_;
+  bool smooth_;
+  Ggx ggx_;
+};
+
+}  // namespace lp::render

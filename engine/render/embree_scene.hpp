@@ -1,0 +1,57 @@
+#pragma once
+// The scene's geometry in Embree 3: exact spheres (Embree's sphere primitive, hit points re-projected
+// onto the analytic sphere), planes (a quad far larger than the rest of the scene), triangle meshes.
+// Geometry i of the Embree scene is object i of the SceneDesc.
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include "engine/render/camera.hpp"
+#include "engine/render/mesh_loader.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::render {
+
+struct SurfaceHit {
+  float t = 0;
+  Vec3 position;
+  Vec3 normal;  // unit geometric normal: outward on spheres, the plane's normal, CCW winding on meshes
+  uint32_t object = 0;
+};
+
+class EmbreeScene {
+ public:
+  // Throws lp::Error (InvalidArgument for bad shapes; mesh errors from load_obj_mesh).
+  EmbreeScene(const SceneDesc& scene, const MeshLimits& limits);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  std::optional<SurfaceHit> intersect(const Ray& ray) const;
+  // True if anything lies along the ray within (0, t_max).
+  bool occluded(const Ray& ray, float t_max = std::numeric_limits<float>::infinity()) const;
+
+  // A ray origin off the surface on the side `direction` leaves to (avoids self-intersection).
+  static Vec3 offset_origin(const SurfaceHit& hit, Vec3 direction);
+
+  size_t triangle_count() const { return triangle_count_; }
+  RTCScene handle() const { return scene_; }
+
+ private:
+  struct Object;
+  void add_sphere(uint32_t id, const SphereObject& s);
+  void add_plane(uint32_t id, const PlaneObject& p, float half_size);
+  void add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& limits);
+  void attach(RTCGeometry geometry, uint32_t id);
+
+  std::shared_ptr<RTCDeviceTy> device_;
+  RTCScene scene_ = nullptr;
+  std::vector<Object> objects_;
+  size_t triangle_count_ = 0;
+};
+
+}  // namespace lp::render

@@ -1,0 +1,137 @@
+#include "engine/render/integrator.hpp"
+
+#include <algorithm>
+
+#include "engine/render/warp.hpp"
+
+namespace lp::render {
+namespace {
+
+inline constexpr int kRouletteDepth = 3;
+
+float power_heuristic(float a, float b) {
+  const float a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0f;
+}
+
+bool is_black(Rgb c) { return c.x <= 0 && c.y <= 0 && c.z <= 0; }
+
+}  // namespace
+
+Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs, const EnvLight& env,
+                       const std::vector<DirectionalLight>& lights, const IntegratorConfig& config)
+    : scene_(scene), bsdfs_(bsdfs), env_(env), lights_(lights), config_(config) {}
+
+Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const {
+  Rgb result{}, beta{1, 1, 1};
+  Ray ray = camera_ray;
+  bool delta_chain = true, last_delta = true;
+  float bsdf_pdf = 0, eta_scale = 1;
+  const bool lit_by_map = config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
+  EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
+  for (int depth = 0;; ++depth) {
+    ++rays;
+    const std::optional<SurfaceHit> hit = scene_.intersect(ray);
+    if (!hit) {
+      if (depth == 0) escape = env_.locate(ray.direction);
+      result += beta * escaped(escape, depth, delta_chain, last_delta, bsdf_pdf);
+      break;
+    }
+    if (depth >= config_.max_depth) break;
+
+    const Bsdf& bsdf = *bsdfs_[hit->object];
+    const Vec3 wo_world = -ray.direction;
+    const bool flip = bsdf.two_sided() && dot(wo_world, hit->normal) < 0;
+    const Frame frame = Frame::from_normal(flip ? -hit->normal : hit->normal);
+    const Shading shading{*hit, frame, bsdf, frame.to_local(wo_world)};
+
+    // A fixed number of dimensions per bounce, whatever the branches, keeps the sequences aligned.
+    const Point2 u_light = sampler.get_2d();
+    const Point2 u_choice = sampler.get_2d();  // x: which light, y: which BSDF lobe
+    const Point2 u_bsdf = sampler.get_2d();
+    const float u_roulette = sampler.get_1d();
+
+    if (bsdf.has_smooth_part()) result += beta * direct(shading, u_light, u_choice.x, rays);
+
+    const std::optional<BsdfSample> s = bsdf.sample(shading.wo, u_choice.y, u_bsdf);
+    if (!s || is_black(s->weight)) break;
+    beta *= s->weight;
+    last_delta = s->delta;
+    delta_chain = delta_chain && s->delta;
+    bsdf_pdf = s->pdf;
+    eta_scale *= s->eta * s->eta;
+    const Vec3 wi = normalize(frame.to_world(s->wi));
+    ray = {EmbreeScene::offset_origin(*hit, wi), wi};
+    if (lit_by_map || delta_chain) escape = env_.locate(wi);
+
+    if (depth + 1 >= kRouletteDepth) {
+      const float q = std::min(1.0f, max_component(beta) * eta_scale);
+      if (u_roulette >= q) break;
+      beta = beta / q;
+    }
+  }
+  return result;
+}
+
+Rgb Integrator::escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta, float bsdf_pdf) const {
+  if (depth == 0) return config_.env_visible ? env_.radiance(pixel) : Rgb{};
+  switch (config_.mode) {
+    case LightingMode::Bsdf:
+      return env_.radiance(pixel);
+    case LightingMode::EnvMap:
+      return last_delta ? env_.radiance(pixel) : env_.radiance(pixel) * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
+    case LightingMode::Uniform:
+      return last_delta ? env_.radiance(pixel) : env_.radiance(pixel) * power_heuristic(bsdf_pdf, kUniformSpherePdf);
+    case LightingMode::MedianCut:
+    case LightingMode::MedianCutAll:
+      return delta_chain ? env_.radiance(pixel) : Rgb{};
+  }
+  return {};
+}
+
+Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const {
+  switch (config_.mode) {
+    case LightingMode::EnvMap: {
+      const LightSample light = env_.sample_importance(u_light);
+      return direct_env(s, light, light.pdf, rays);
+    }
+    case LightingMode::Uniform:
+      return direct_env(s, env_.sample_uniform(u_light), kUniformSpherePdf, rays);
+    case LightingMode::Bsdf:
+      return {};
+    case LightingMode::MedianCut: {
+      const size_t n = lights_.size();
+      if (n == 0) return {};
+      const size_t i = std::min(n - 1, size_t(u_select * float(n)));
+      return direct_directional(s, lights_[i], rays) * float(n);
+    }
+    case LightingMode::MedianCutAll: {
+      Rgb sum{};
+      for (const DirectionalLight& light : lights_) sum += direct_directional(s, light, rays);
+      return sum;
+    }
+  }
+  return {};
+}
+
+Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const {
+  if (!(light_pdf > 0) || is_black(light.radiance)) return {};
+  const Vec3 wi = s.frame.to_local(light.direction);
+  const Rgb f = s.bsdf.eval(s.wo, wi);
+  if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
+  const float weight = power_heuristic(light_pdf, s.bsdf.pdf(s.wo, wi));
+  return f * light.radiance * (weight / light_pdf);
+}
+
+Rgb Integrator::direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const {
+  const Rgb f = s.bsdf.eval(s.wo, s.frame.to_local(light.direction));
+  if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
+  return f * light.power;
+}
+
+bool Integrator::visible(const SurfaceHit& hit, Vec3 direction, uint64_t& rays) const {
+  ++rays;
+  return !scene_.occluded({EmbreeScene::offset_origin(hit, direction), direction});
+}
+
+}  // namespace lp::render

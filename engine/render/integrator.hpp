@@ -1,0 +1,57 @@
+#pragma once
+// Unidirectional path tracing with next-event estimation. The light is the environment map, sampled
+// per the lighting mode:
+//   envmap:  importance sampling of the map, combined with BSDF sampling by MIS (power heuristic);
+//   uniform: uniform sphere sampling, with MIS;
+//   bsdf:    no light sampling, paths count the map when they escape;
+//   median_cut / median_cut_all: directional lights from median cut, one picked per shading point
+//            (pdf 1/n) or all of them. The map itself then lights nothing: it is only seen by the
+//            camera and through chains of delta (mirror, glass) bounces.
+// Russian roulette after three bounces; `max_depth` bounces at most.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/render/bsdf.hpp"
+#include "engine/render/directional_lights.hpp"
+#include "engine/render/embree_scene.hpp"
+#include "engine/render/env_light.hpp"
+#include "engine/render/frame.hpp"
+
+namespace lp::render {
+
+struct IntegratorConfig {
+  LightingMode mode = LightingMode::EnvMap;
+  int max_depth = 8;
+  bool env_visible = true;  // camera rays that escape see the map (else black)
+};
+
+class Integrator {
+ public:
+  Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs, const EnvLight& env,
+             const std::vector<DirectionalLight>& lights, const IntegratorConfig& config);
+
+  // Radiance along a camera ray. Adds the rays it traces to `rays`.
+  Rgb radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const;
+
+ private:
+  struct Shading {
+    const SurfaceHit& hit;
+    const Frame& frame;
+    const Bsdf& bsdf;
+    Vec3 wo;  // local
+  };
+  Rgb escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta, float bsdf_pdf) const;
+  Rgb direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const;
+  Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;
+  Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const;
+  bool visible(const SurfaceHit& hit, Vec3 direction, uint64_t& rays) const;
+
+  const EmbreeScene& scene_;
+  const std::vector<std::unique_ptr<Bsdf>>& bsdfs_;
+  const EnvLight& env_;
+  const std::vector<DirectionalLight>& lights_;
+  IntegratorConfig config_;
+};
+
+}  // namespace lp::render

@@ -1,0 +1,154 @@
+#include "engine/render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#define LP_HAVE_MXCSR 1
+#endif
+
+#include "engine/core/error.hpp"
+#include "engine/render/bsdf.hpp"
+#include "engine/render/camera.hpp"
+#include "engine/render/directional_lights.hpp"
+#include "engine/render/embree_scene.hpp"
+#include "engine/render/env_light.hpp"
+#include "engine/render/film.hpp"
+#include "engine/render/integrator.hpp"
+#include "engine/render/path_sampler.hpp"
+
+namespace lp::render {
+namespace {
+
+inline constexpr int kTileSize = 16;
+inline constexpr int kMaxDepthLimit = 1024;
+
+void check_settings(const RenderSettings& s, const Lighting& l) {
+  auto invalid = [](const std::string& what) { throw Error(ErrorKind::InvalidArgument, what); };
+  if (s.width < 1 || s.height < 1) invalid("settings: width and height must be >= 1");
+  if (s.max_depth < 0 || s.max_depth > kMaxDepthLimit) invalid("settings: max_depth must be in [0, 1024]");
+  const bool median_cut = l.mode == LightingMode::MedianCut || l.mode == LightingMode::MedianCutAll;
+  if (median_cut && l.lights < 1) invalid("lighting: lights must be >= 1");
+}
+
+std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
+  std::vector<std::unique_ptr<Bsdf>> out;
+  for (const SceneObject& o : scene.objects) out.push_back(make_bsdf(o.material));
+  return out;
+}
+
+// Embree recommends flush-to-zero and denormals-are-zero; set per tile and restored, since the
+// worker threads are shared with other code.
+class FlushDenormals {
+ public:
+#ifdef LP_HAVE_MXCSR
+  FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
+  ~FlushDenormals() { _mm_setcsr(saved_); }
+
+ private:
+  unsigned saved_;
+#endif
+};
+
+bool finite(Rgb c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
+
+}  // namespace
+
+struct Renderer::Impl {
+  Impl(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& s, std::shared_ptr<const EnvMap> envmap)
+      : settings(s),
+        camera(scene.camera, s.width, s.height),
+        bsdfs(make_bsdfs(scene)),
+        env(std::move(envmap), lighting),
+        lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights) : std::vector<DirectionalLight>{}),
+        geometry(scene, s.mesh_limits),
+        integrator(geometry, bsdfs, env, lights, {lighting.mode, s.max_depth, lighting.visible}),
+        film(s.width, s.height),
+        tiles_x((s.width + kTileSize - 1) / kTileSize),
+        tiles_y((s.height + kTileSize - 1) / kTileSize) {}
+
+  static bool uses_lights(LightingMode m) { return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll; }
+
+  void render_tile(int tile, uint32_t first_sample, int spp) {
+    const FlushDenormals ftz;
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
+    uint64_t tile_rays = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const uint64_t pixel = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
+        Rgb sum{};
+        for (int i = 0; i < spp; ++i) {
+          PathSampler sampler(settings.seed, pixel, first_sample + uint32_t(i));
+          const Point2 jitter = sampler.get_2d();
+          const Ray ray = camera.generate(float(x) + jitter.x, float(y) + jitter.y);
+          const Rgb l = integrator.radiance(ray, sampler, tile_rays);
+          if (finite(l)) sum += l;  // a numerical failure must not poison the image
+        }
+        film.set_pass_sum(x, y, sum);
+      }
+    }
+    samples.fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0) * uint64_t(spp), std::memory_order_relaxed);
+    rays.fetch_add(tile_rays, std::memory_order_relaxed);
+  }
+
+  RenderSettings settings;
+  PerspectiveCamera camera;
+  std::vector<std::unique_ptr<Bsdf>> bsdfs;
+  EnvLight env;
+  std::vector<DirectionalLight> lights;
+  EmbreeScene geometry;
+  Integrator integrator;
+  Film film;
+  int tiles_x, tiles_y;
+  std::atomic<uint64_t> samples{0}, rays{0};
+};
+
+Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
+                   std::shared_ptr<const EnvMap> envmap) {
+  check_settings(settings, lighting);
+  impl_ = std::make_unique<Impl>(scene, lighting, settings, std::move(envmap));
+}
+
+Renderer::~Renderer() = default;
+
+int Renderer::tile_count() const { return impl_->tiles_x * impl_->tiles_y; }
+
+bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile) {
+  if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_pass: spp must be >= 1");
+  const uint32_t first = uint32_t(impl_->film.spp());
+  std::atomic<bool> skipped{false};
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, tile_count(), 1),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int t = range.begin(); t != range.end(); ++t) {
+          if (cancel.load(std::memory_order_relaxed)) {
+            skipped.store(true, std::memory_order_relaxed);
+            continue;
+          }
+          impl_->render_tile(t, first, spp);
+          if (on_tile) on_tile();
+        }
+      },
+      tbb::simple_partitioner());
+  if (skipped.load()) return false;
+  impl_->film.merge_pass(spp);
+  return true;
+}
+
+int Renderer::spp_done() const { return impl_->film.spp(); }
+
+Image Renderer::image() const { return impl_->film.mean(); }
+
+RenderStats Renderer::stats() const {
+  return {impl_->samples.load(std::memory_order_relaxed), impl_->rays.load(std::memory_order_relaxed)};
+}
+
+}  // namespace lp::render

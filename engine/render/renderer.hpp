@@ -1,0 +1,46 @@
+#pragma once
+// A progressive, tiled, multi-threaded path tracer over an Embree scene lit by an environment map.
+// The caller (a job) drives it pass by pass; each pass adds samples to every pixel, so a valid image
+// exists after the first pass. Cancellation is checked per tile; progress is reported per tile.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "engine/envmap/envmap.hpp"
+#include "engine/image/image.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::render {
+
+struct RenderStats {
+  uint64_t samples = 0;  // camera samples (pixel samples) traced so far
+  uint64_t rays = 0;     // all rays traced (camera, bounce, shadow)
+};
+
+class Renderer {
+ public:
+  // Builds the Embree scene (loads meshes), the camera and the lights. Throws lp::Error on bad input
+  // (InvalidArgument for an unusable scene, NotFound / Corrupt for a mesh file).
+  Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
+           std::shared_ptr<const EnvMap> envmap);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  int tile_count() const;
+  // Adds `spp` samples per pixel. Runs in parallel (oneTBB) in the caller's task arena; calls
+  // `on_tile` after each finished tile (from worker threads). Returns false if `cancel` became true
+  // (the pass is then incomplete and not added to the image).
+  bool render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
+
+  int spp_done() const;
+  Image image() const;  // mean of the finished passes (linear radiance)
+  RenderStats stats() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lp::render

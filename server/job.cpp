@@ -1,0 +1,137 @@
+#include "server/job.hpp"
+
+#include <algorithm>
+#include <ctime>
+#include <exception>
+
+#include "engine/core/error.hpp"
+
+namespace lp::server {
+namespace {
+
+const char* error_code(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::InvalidArgument: return "invalid_argument";
+    case ErrorKind::Unsupported: return "unsupported";
+    case ErrorKind::Corrupt: return "corrupt";
+    case ErrorKind::InvalidData: return "invalid_data";
+    case ErrorKind::TooLarge: return "too_large";
+    case ErrorKind::NotFound: return "not_found";
+  }
+  return "internal";
+}
+
+std::string iso8601(std::chrono::system_clock::time_point t) {
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+}  // namespace
+
+const char* status_name(JobStatus status) {
+  switch (status) {
+    case JobStatus::Queued: return "queued";
+    case JobStatus::Running: return "running";
+    case JobStatus::Done: return "done";
+    case JobStatus::Failed: return "failed";
+    case JobStatus::Cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+bool is_finished(JobStatus status) {
+  return status == JobStatus::Done || status == JobStatus::Failed || status == JobStatus::Cancelled;
+}
+
+Job::Job(std::string id) : id_(std::move(id)), created_(std::chrono::system_clock::now()) {}
+
+JobStatus Job::status() const {
+  std::lock_guard lock(mutex_);
+  return status_;
+}
+
+double Job::progress() const {
+  if (status() == JobStatus::Done) return 1.0;
+  const int64_t total = work_total_.load();
+  if (total <= 0) return 0.0;
+  return std::clamp(static_cast<double>(work_done_.load()) / static_cast<double>(total), 0.0, 1.0);
+}
+
+double Job::elapsed_s() const {
+  std::lock_guard lock(mutex_);
+  if (!started_) return 0.0;
+  const auto end = ended_.value_or(std::chrono::steady_clock::now());
+  return std::chrono::duration<double>(end - *started_).count();
+}
+
+std::optional<JobError> Job::error() const {
+  std::lock_guard lock(mutex_);
+  return error_;
+}
+
+nlohmann::json Job::status_json() const {
+  nlohmann::json out;
+  out["id"] = id_;
+  out["status"] = status_name(status());
+  out["progress"] = progress();
+  out["elapsed_s"] = elapsed_s();
+  out["created"] = iso8601(created_);
+  out["cancel_requested"] = cancel_requested();
+  const auto err = error();
+  out["error"] = err ? nlohmann::json{{"code", err->code}, {"message", err->message}} : nlohmann::json(nullptr);
+  describe(out);
+  return out;
+}
+
+bool Job::wait_finished_for(std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  return finished_cv_.wait_for(lock, timeout, [&] { return is_finished(status_); });
+}
+
+bool Job::request_cancel() {
+  cancel_.store(true);
+  std::unique_lock lock(mutex_);
+  if (status_ != JobStatus::Queued) return false;
+  status_ = JobStatus::Cancelled;
+  lock.unlock();
+  finished_cv_.notify_all();
+  return true;
+}
+
+bool Job::start() {
+  std::lock_guard lock(mutex_);
+  if (status_ != JobStatus::Queued) return false;
+  status_ = JobStatus::Running;
+  started_ = std::chrono::steady_clock::now();
+  return true;
+}
+
+void Job::finish(JobStatus status, std::optional<JobError> error) {
+  {
+    std::lock_guard lock(mutex_);
+    status_ = status;
+    error_ = std::move(error);
+    ended_ = std::chrono::steady_clock::now();
+  }
+  finished_cv_.notify_all();
+}
+
+void Job::execute() {
+  if (!start()) return;
+  try {
+    const bool completed = run();
+    finish(completed ? JobStatus::Done : JobStatus::Cancelled, std::nullopt);
+  } catch (const Error& e) {
+    finish(JobStatus::Failed, JobError{error_code(e.kind()), e.what()});
+  } catch (const std::exception& e) {
+    finish(JobStatus::Failed, JobError{"internal", e.what()});
+  } catch (...) {
+    finish(JobStatus::Failed, JobError{"internal", "unknown error"});
+  }
+}
+
+}  // namespace lp::server

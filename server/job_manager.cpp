@@ -1,0 +1,163 @@
+#include "server/job_manager.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <fmt/format.h>
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/task_arena.h>
+#include <spdlog/spdlog.h>
+
+#include "engine/core/rng.hpp"
+
+namespace lp::server {
+
+JobManager::JobManager(const JobManagerConfig& config) : config_(config), id_state_(std::random_device{}()) {
+  id_state_ = (id_state_ << 32) ^ std::random_device{}();
+  for (int i = 0; i < std::max(1, config_.max_running); ++i)
+    runners_.emplace_back([this, i] { runner_loop(i); });
+}
+
+JobManager::~JobManager() { shutdown(); }
+
+std::string JobManager::new_id() {
+  std::lock_guard lock(mutex_);
+  id_state_ += 0x9e3779b97f4a7c15ULL;
+  return fmt::format("{:016x}", mix64(id_state_));
+}
+
+bool JobManager::submit(std::shared_ptr<Job> job) {
+  {
+    std::lock_guard lock(mutex_);
+    // Capacity counts running jobs too, so a job is accepted whenever a runner is idle, and the
+    // answer does not depend on whether a runner has taken the previous job off the queue yet.
+    if (stopping_ || queue_.size() + running_.size() >= size_t(config_.max_queued + config_.max_running)) return false;
+    jobs_[job->id()] = job;
+    queue_.push_back(std::move(job));
+  }
+  work_cv_.notify_one();
+  return true;
+}
+
+std::shared_ptr<Job> JobManager::find(const std::string& id) const {
+  std::lock_guard lock(mutex_);
+  auto it = jobs_.find(id);
+  return it == jobs_.end() ? nullptr : it->second;
+}
+
+std::vector<std::shared_ptr<Job>> JobManager::list() const {
+  std::vector<std::shared_ptr<Job>> out;
+  {
+    std::lock_guard lock(mutex_);
+    for (const auto& [id, job] : jobs_) out.push_back(job);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a->created() < b->created(); });
+  return out;
+}
+
+JobManager::CancelOutcome JobManager::cancel_or_remove(const std::string& id) {
+  std::shared_ptr<Job> job;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = jobs_.find(id);
+    if (it == jobs_.end()) return CancelOutcome::NotFound;
+    job = it->second;
+    if (is_finished(job->status())) {
+      jobs_.erase(it);
+      auto f = std::find(finished_.begin(), finished_.end(), job);
+      if (f != finished_.end()) {
+        finished_bytes_ -= job->retained_bytes();
+        finished_.erase(f);
+      }
+      return CancelOutcome::Removed;
+    }
+  }
+  if (!job->request_cancel()) return CancelOutcome::Cancelling;  // running: stops at its next tile
+  spdlog::info("job {} cancelled while queued", id);
+  std::lock_guard lock(mutex_);
+  auto q = std::find(queue_.begin(), queue_.end(), job);
+  if (q != queue_.end()) {
+    queue_.erase(q);
+    retire(job);
+  }
+  // else a runner took it off the queue just now; it sees the cancelled status and retires it.
+  return CancelOutcome::Cancelled;
+}
+
+int JobManager::retry_after_s() const {
+  std::lock_guard lock(mutex_);
+  if (running_.empty()) return 1;
+  double soonest = 60;
+  for (const auto& job : running_) {
+    const double p = job->progress();
+    if (p > 0.01) soonest = std::min(soonest, job->elapsed_s() * (1 - p) / p);
+  }
+  return std::clamp(int(std::ceil(soonest)), 1, 60);
+}
+
+int JobManager::queued_count() const {
+  std::lock_guard lock(mutex_);
+  return int(queue_.size());
+}
+
+int JobManager::running_count() const {
+  std::lock_guard lock(mutex_);
+  return int(running_.size());
+}
+
+void JobManager::shutdown() {
+  std::vector<std::shared_ptr<Job>> to_cancel;
+  {
+    std::lock_guard lock(mutex_);
+    if (stopping_) return;
+    stopping_ = true;
+    to_cancel.assign(queue_.begin(), queue_.end());
+    to_cancel.insert(to_cancel.end(), running_.begin(), running_.end());
+    queue_.clear();
+  }
+  if (!to_cancel.empty()) spdlog::info("shutting down: cancelling {} render job(s)", to_cancel.size());
+  for (const auto& job : to_cancel) job->request_cancel();
+  work_cv_.notify_all();
+  runners_.clear();  // joins
+}
+
+std::shared_ptr<Job> JobManager::next_job() {
+  std::unique_lock lock(mutex_);
+  work_cv_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+  if (stopping_) return nullptr;
+  auto job = std::move(queue_.front());
+  queue_.pop_front();
+  running_.push_back(job);
+  return job;
+}
+
+void JobManager::runner_loop(int runner) {
+  const int concurrency = config_.arena_concurrency > 0 ? config_.arena_concurrency : tbb::info::default_concurrency();
+  // Low priority: oneTBB gives its workers to interactive requests (sampling, previews), which run in
+  // normal-priority arenas, before the renders.
+  tbb::task_arena arena(concurrency, 1, tbb::task_arena::priority::low);
+  while (auto job = next_job()) {
+    spdlog::debug("runner {} takes job {}", runner, job->id());
+    arena.execute([&] { job->execute(); });
+    std::lock_guard lock(mutex_);
+    running_.erase(std::find(running_.begin(), running_.end(), job));
+    retire(job);
+  }
+}
+
+void JobManager::retire(const std::shared_ptr<Job>& job) {
+  if (!jobs_.count(job->id())) return;  // removed by a DELETE between its end and now
+  finished_.push_back(job);
+  finished_bytes_ += job->retained_bytes();
+  while (finished_.size() > 1 &&
+         (int(finished_.size()) > config_.max_finished || finished_bytes_ > config_.max_finished_bytes)) {
+    const auto oldest = finished_.front();
+    finished_.pop_front();
+    finished_bytes_ -= oldest->retained_bytes();
+    jobs_.erase(oldest->id());
+    spdlog::debug("dropped finished job {} (finished-job limit)", oldest->id());
+  }
+}
+
+}  // namespace lp::server

@@ -1,0 +1,188 @@
+// Render jobs: POST /api/v1/renders queues a render; status, image (the current pass while running),
+// server-sent progress events, cancel / remove, and the list of jobs.
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "api/api_error.hpp"
+#include "api/preview_params.hpp"
+#include "api/render_request.hpp"
+#include "engine/image/image_io.hpp"
+#include "server/data_dir.hpp"
+#include "server/render_job.hpp"
+#include "server/routes.hpp"
+
+namespace lp::server {
+namespace {
+
+using namespace std::chrono_literals;
+
+api::RenderLimits render_limits(const Options& o) {
+  return {o.max_render_width, o.max_render_height,   o.max_render_spp,
+          o.max_render_depth, o.max_render_objects,  int(std::min<int64_t>(o.max_lights, 1 << 30)),
+          o.max_mesh_triangles};
+}
+
+std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
+  auto job = std::dynamic_pointer_cast<RenderJob>(app.renders.find(id));
+  if (!job) throw api::not_found("no render job '" + id + "'");
+  return job;
+}
+
+// Mesh paths are relative to --data-dir and must stay inside it. Every problem is a 400 naming the field.
+void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
+    if (!mesh) continue;
+    const std::string field = fmt::format("scene.objects[{}].path", i);
+    const std::string relative = mesh->path.string();
+    try {
+      mesh->path = resolve_in_data_dir(options, relative, field);
+    } catch (const api::ApiError& e) {
+      if (e.status() != 404) throw;
+      throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
+    }
+  }
+}
+
+void submit(App& app, const httplib::Request& req, httplib::Response& res) {
+  auto request = api::parse_render_request(api::parse_json_object(req.body), render_limits(app.options));
+  const auto envmap = app.envmaps.find(request.envmap);
+  if (!envmap) throw api::invalid_field("envmap", "no environment map '" + request.envmap + "' is loaded");
+  resolve_meshes(request.scene, app.options);
+  auto job = std::make_shared<RenderJob>(app.renders.new_id(), std::move(request), envmap->map);
+  const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
+  if (!app.renders.submit(job)) {
+    res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
+    send_error(res, 503, "queue_full",
+               fmt::format("{} renders are running and {} queued (the limit); retry later", app.renders.running_count(),
+                           app.renders.queued_count()));
+    return;
+  }
+  res.set_header("Location", "/api/v1/renders/" + job->id());
+  send_json(res, body, 202);
+}
+
+void list(const App& app, httplib::Response& res) {
+  nlohmann::json renders = nlohmann::json::array();
+  for (const auto& job : app.renders.list()) renders.push_back(job->status_json());
+  send_json(res, {{"renders", renders},
+                  {"running", app.renders.running_count()},
+                  {"queued", app.renders.queued_count()},
+                  {"max_running", app.options.max_running_jobs},
+                  {"max_queued", app.options.max_queued_jobs}});
+}
+
+void image(const App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = find_render(app, path_param(req, 1));
+  const auto params = api::parse_preview_params(req.params);
+  const RenderImage current = job->image();
+  if (!current.image)
+    throw api::ApiError(409, "no_image_yet",
+                        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
+  const auto bytes = write_image(*current.image, params.format, params.tone);
+  res.set_header("Cache-Control", "no-store");
+  res.set_header("X-Spp-Done", std::to_string(current.spp_done));
+  res.set_content(reinterpret_cast<const char*>(bytes.data()), bytes.size(), format_mime_type(params.format));
+}
+
+void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = find_render(app, path_param(req, 1));
+  switch (app.renders.cancel_or_remove(job->id())) {
+    case JobManager::CancelOutcome::NotFound: throw api::not_found("no render job '" + job->id() + "'");
+    case JobManager::CancelOutcome::Removed: res.status = 204; return;
+    default: send_json(res, job->status_json(), 202);
+  }
+}
+
+// One slot of the bounded number of event streams; released when the response (and its provider) goes.
+class StreamSlot {
+ public:
+  StreamSlot(std::shared_ptr<std::atomic<int>> count, int max) : count_(std::move(count)) {
+    if (count_->fetch_add(1) >= max) {
+      count_->fetch_sub(1);
+      count_.reset();
+    }
+  }
+  ~StreamSlot() {
+    if (count_) count_->fetch_sub(1);
+  }
+  StreamSlot(const StreamSlot&) = delete;
+  StreamSlot& operator=(const StreamSlot&) = delete;
+  bool acquired() const { return count_ != nullptr; }
+
+ private:
+  std::shared_ptr<std::atomic<int>> count_;
+};
+
+struct EventStream {
+  std::shared_ptr<RenderJob> job;
+  std::unique_ptr<StreamSlot> slot;
+  std::string last_data;
+  std::chrono::steady_clock::time_point last_write = std::chrono::steady_clock::now();
+  bool first = true;
+};
+
+bool write_text(httplib::DataSink& sink, const std::string& text) { return sink.write(text.data(), text.size()); }
+
+// Called by httplib again and again until it returns false or calls sink.done(). Each call waits up to
+// 250 ms for the job to end, then sends a progress event if the status changed (or a comment every 2 s
+// so a vanished client is noticed). When the job ends it sends the final status as "end" and closes.
+bool next_event(EventStream& s, httplib::DataSink& sink) {
+  if (!sink.is_writable()) return false;
+  const bool finished = s.job->wait_finished_for(s.first ? 0ms : 250ms);
+  s.first = false;
+  const std::string data = s.job->status_json().dump();
+  if (finished) {
+    const bool ok = write_text(sink, "event: end\ndata: " + data + "\n\n");
+    sink.done();
+    return ok;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  std::string text;
+  if (data != s.last_data) text = "event: progress\ndata: " + data + "\n\n";
+  else if (now - s.last_write > 2s) text = ": waiting\n\n";
+  if (text.empty()) return true;
+  s.last_data = data;
+  s.last_write = now;
+  return write_text(sink, text);
+}
+
+void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, const httplib::Request& req,
+            httplib::Response& res) {
+  auto state = std::make_shared<EventStream>();
+  state->job = find_render(app, path_param(req, 1));
+  state->slot = std::make_unique<StreamSlot>(streams, app.options.max_event_streams);
+  if (!state->slot->acquired()) {
+    res.set_header("Retry-After", "5");
+    send_error(res, 503, "too_many_streams",
+               fmt::format("{} event streams are open (the limit); poll GET /api/v1/renders/{} instead",
+                           app.options.max_event_streams, state->job->id()));
+    return;
+  }
+  res.set_header("Cache-Control", "no-store");
+  res.set_chunked_content_provider("text/event-stream",
+                                   [state](size_t, httplib::DataSink& sink) { return next_event(*state, sink); });
+}
+
+}  // namespace
+
+void register_render_routes(Router& router, App& app) {
+  auto streams = std::make_shared<std::atomic<int>>(0);
+  router.post("/api/v1/renders", [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
+  router.get("/api/v1/renders", [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
+  router.get("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
+    send_json(res, find_render(app, path_param(req, 1))->status_json());
+  });
+  router.get("/api/v1/renders/{id}/image",
+             [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
+  router.get("/api/v1/renders/{id}/events", [&app, streams](const httplib::Request& req, httplib::Response& res) {
+    events(app, streams, req, res);
+  });
+  router.del("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
+}
+
+}  // namespace lp::server

@@ -1,0 +1,80 @@
+#include "server/server.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "server/routes.hpp"
+
+namespace lp::server {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+thread_local Clock::time_point request_start;
+
+// Worker threads for connections; computation itself runs on oneTBB's pool.
+size_t http_worker_count(const Options& options) {
+  const int cores = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  return size_t(std::max(16, 4 * cores));
+}
+
+}  // namespace
+
+Server::Server(App& app) : app_(app), router_(http_) {
+  http_.new_task_queue = [n = http_worker_count(app.options)] { return new httplib::ThreadPool(n); };
+  http_.set_payload_max_length(size_t(app.options.max_upload_mb) * 1024 * 1024);
+  http_.set_read_timeout(60);
+  http_.set_write_timeout(60);
+  http_.set_keep_alive_max_count(1000);
+
+  // A request is handled start to end on one worker thread, so its start time can live there.
+  http_.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+    request_start = Clock::now();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+  http_.set_logger([](const httplib::Request& req, const httplib::Response& res) {
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - request_start).count();
+    spdlog::info("{} {} {} {:.1f} ms", req.method, req.path, res.status, ms);
+  });
+  // Responses httplib makes itself (no route, body too large, ...) get the JSON error shape too.
+  http_.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    if (res.status == 404) send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
+    else if (res.status == 413) send_error(res, 413, "payload_too_large", "the request body is over the server's limit (--max-upload-mb)");
+    else if (res.status == 405) send_error(res, 405, "method_not_allowed", "method not allowed");
+    else send_error(res, res.status, "bad_request", "the request could not be handled");
+  });
+  http_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
+    std::string message = "internal error";
+    try {
+      if (ep) std::rethrow_exception(ep);
+    } catch (const std::exception& e) {
+      message = e.what();
+    } catch (...) {
+    }
+    send_error(res, 500, "internal", message);
+  });
+
+  register_meta_routes(router_, app_);
+  register_envmap_routes(router_, app_);
+  register_sample_routes(router_, app_);
+  register_render_routes(router_, app_);
+  register_fresnel_routes(router_, app_);
+  register_median_cut_routes(router_, app_);
+}
+
+int Server::bind() {
+  const auto& o = app_.options;
+  const int port = o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
+  if (port <= 0) throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port));
+  return port;
+}
+
+void Server::run() { http_.listen_after_bind(); }
+
+void Server::stop() { http_.stop(); }
+
+}  // namespace lp::server

@@ -1,0 +1,257 @@
+// BSDFs of the path tracer: sampling agrees with the pdf (chi-square), sample weights agree with
+// eval / pdf, reciprocity, energy conservation, and analytic albedos.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/core/constants.hpp"
+#include "engine/core/error.hpp"
+#include "engine/core/rng.hpp"
+#include "engine/fresnel/conductor.hpp"
+#include "engine/fresnel/dielectric.hpp"
+#include "engine/fresnel/metals.hpp"
+#include "engine/render/bsdf.hpp"
+#include "engine/render/bsdf_plastic.hpp"
+#include "support/chi_square.hpp"
+
+namespace lp::render {
+namespace {
+
+Vec3 direction(float theta_deg, float phi) {
+  const float t = theta_deg * kPiF / 180.0f;
+  return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
+}
+
+ConductorMaterial gold(float roughness) {
+  const auto& m = lookup_metal("gold");
+  return {m.eta_rgb(), m.k_rgb(), roughness};
+}
+
+struct Case {
+  std::string name;
+  Material material;
+};
+
+// Materials with a non-delta part (the ones light sampling and the chi-square test apply to).
+std::vector<Case> smooth_part_cases() {
+  return {
+      {"diffuse", DiffuseMaterial{{0.8f, 0.5f, 0.2f}}},
+      {"conductor_a0.1", gold(0.1f)},
+      {"conductor_a0.3", gold(0.3f)},
+      {"conductor_a0.7", gold(0.7f)},
+      {"plastic_a0.1", PlasticMaterial{{0.7f, 0.1f, 0.1f}, 1.5f, 0.1f}},
+      {"plastic_a0.4", PlasticMaterial{{0.2f, 0.6f, 0.9f}, 1.5f, 0.4f}},
+      {"plastic_smooth", PlasticMaterial{{0.5f, 0.5f, 0.5f}, 1.5f, 0.0f}},
+  };
+}
+
+const float kThetas[] = {10.0f, 55.0f, 82.0f};
+
+// Cells of equal solid angle: cos(theta) in [-1, 1] x phi in [0, 2 pi).
+class SphereHistogram {
+ public:
+  static constexpr int kCos = 20, kPhi = 40;
+
+  static int cell(Vec3 w) {
+    const int i = std::clamp(int((w.z + 1.0f) * 0.5f * kCos), 0, kCos - 1);
+    float phi = std::atan2(w.y, w.x);
+    if (phi < 0) phi += 2 * kPiF;
+    const int j = std::clamp(int(phi / (2 * kPiF) * kPhi), 0, kPhi - 1);
+    return i * kPhi + j;
+  }
+
+  // N * integral of pdf over each cell (midpoint rule on a fine sub-grid), plus a last cell for the
+  // delta lobes and failed samples: N * (1 - integral over the sphere).
+  static std::vector<double> expected(const std::function<float(Vec3)>& pdf, double n) {
+    constexpr int kSub = 16;
+    std::vector<double> e(kCos * kPhi + 1, 0.0);
+    double total = 0;
+    const double dc = 2.0 / kCos / kSub, dp = 2.0 * kPi / kPhi / kSub;
+    for (int i = 0; i < kCos; ++i)
+      for (int j = 0; j < kPhi; ++j) {
+        double sum = 0;
+        for (int a = 0; a < kSub; ++a)
+          for (int b = 0; b < kSub; ++b) {
+            const double c = -1.0 + (i * kSub + a + 0.5) * dc;
+            const double phi = (j * kSub + b + 0.5) * dp;
+            const double s = std::sqrt(std::max(0.0, 1 - c * c));
+            sum += pdf({float(s * std::cos(phi)), float(s * std::sin(phi)), float(c)});
+          }
+        e[i * kPhi + j] = sum * dc * dp * n;
+        total += sum * dc * dp;
+      }
+    e.back() = std::max(0.0, 1.0 - total) * n;
+    return e;
+  }
+};
+
+TEST(RenderBsdf, SamplingMatchesPdfChiSquare) {
+  constexpr int kSamples = 250000;
+  for (const Case& c : smooth_part_cases()) {
+    const auto bsdf = make_bsdf(c.material);
+    for (float theta : kThetas) {
+      const Vec3 wo = direction(theta, 0.7f);
+      std::vector<double> observed(SphereHistogram::kCos * SphereHistogram::kPhi + 1, 0.0);
+      Rng rng(42, uint64_t(theta * 100));
+      for (int i = 0; i < kSamples; ++i) {
+        const float u_lobe = rng.uniform_float();
+        const Point2 u{rng.uniform_float(), rng.uniform_float()};
+        const auto s = bsdf->sample(wo, u_lobe, u);
+        // No sample (a microfacet reflection below the horizon) and delta lobes: the mass the pdf lacks.
+        if (!s || s->delta) observed.back() += 1;
+        else observed[SphereHistogram::cell(s->wi)] += 1;
+      }
+      const auto expected = SphereHistogram::expected([&](Vec3 wi) { return bsdf->pdf(wo, wi); }, kSamples);
+      const auto r = test::chi_square_test(observed, expected);
+      std::printf("%s theta %.0f: %s\n", c.name.c_str(), double(theta), r.summary().c_str());
+      EXPECT_GT(r.p_value, 0.01) << c.name << " theta " << theta << ": " << r.summary();
+    }
+  }
+}
+
+TEST(RenderBsdf, SampleWeightIsEvalOverPdf) {
+  for (const Case& c : smooth_part_cases()) {
+    const auto bsdf = make_bsdf(c.material);
+    Rng rng(7, 1);
+    for (float theta : kThetas) {
+      const Vec3 wo = direction(theta, 2.0f);
+      for (int i = 0; i < 2000; ++i) {
+        const auto s = bsdf->sample(wo, rng.uniform_float(), {rng.uniform_float(), rng.uniform_float()});
+        if (!s || s->delta) continue;
+        const float pdf = bsdf->pdf(wo, s->wi);
+        ASSERT_NEAR(s->pdf, pdf, 2e-3f * pdf) << c.name;
+        const Rgb expected = bsdf->eval(wo, s->wi) / pdf;
+        for (int k = 0; k < 3; ++k) ASSERT_NEAR(s->weight[k], expected[k], 2e-3f * expected[k] + 1e-6f) << c.name;
+      }
+    }
+  }
+}
+
+TEST(RenderBsdf, Reciprocity) {
+  for (const Case& c : smooth_part_cases()) {
+    const auto bsdf = make_bsdf(c.material);
+    Rng rng(3, 9);
+    for (int i = 0; i < 1000; ++i) {
+      const Vec3 a = direction(89.0f * rng.uniform_float(), 2 * kPiF * rng.uniform_float());
+      const Vec3 b = direction(89.0f * rng.uniform_float(), 2 * kPiF * rng.uniform_float());
+      const Rgb fab = bsdf->eval(a, b) / b.z, fba = bsdf->eval(b, a) / a.z;
+      for (int k = 0; k < 3; ++k) ASSERT_NEAR(fab[k], fba[k], 1e-4f * std::max(1.0f, fab[k])) << c.name;
+    }
+  }
+}
+
+// Directional albedo: the mean sample weight (times eta^2 for a refraction, undoing the radiance
+// scaling) is the fraction of energy scattered, which must not exceed 1.
+double albedo(const Bsdf& bsdf, Vec3 wo, int channel, int n) {
+  Rng rng(11, uint64_t(wo.z * 1e6f));
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const auto s = bsdf.sample(wo, rng.uniform_float(), {rng.uniform_float(), rng.uniform_float()});
+    if (s) sum += double(s->weight[channel]) * s->eta * s->eta;
+  }
+  return sum / n;
+}
+
+TEST(RenderBsdf, EnergyAtMostOne) {
+  // White versions of every material: albedo 1, a perfect mirror, a conductor with k large.
+  const std::vector<Case> cases = {
+      {"diffuse", DiffuseMaterial{{1, 1, 1}}},
+      {"mirror", MirrorMaterial{{1, 1, 1}}},
+      {"dielectric", DielectricMaterial{1.5f}},
+      {"plastic_smooth", PlasticMaterial{{1, 1, 1}, 1.5f, 0}},
+      {"plastic_a0.1", PlasticMaterial{{1, 1, 1}, 1.5f, 0.1f}},
+      {"plastic_a0.5", PlasticMaterial{{1, 1, 1}, 1.5f, 0.5f}},
+      {"plastic_a1", PlasticMaterial{{1, 1, 1}, 1.5f, 1.0f}},
+      {"conductor_a0.05", gold(0.05f)},
+      {"conductor_a0.5", gold(0.5f)},
+      {"conductor_a1", ConductorMaterial{{0.05f, 0.05f, 0.05f}, {8, 8, 8}, 1.0f}},
+  };
+  for (const Case& c : cases) {
+    const auto bsdf = make_bsdf(c.material);
+    for (float theta : {0.0f, 30.0f, 60.0f, 80.0f, 88.0f}) {
+      const double e = albedo(*bsdf, direction(theta, 0.4f), 0, 100000);
+      EXPECT_LE(e, 1.0 + 5e-3) << c.name << " theta " << theta;
+    }
+  }
+}
+
+TEST(RenderBsdf, AnalyticAlbedos) {
+  constexpr int kN = 200000;
+  for (float theta : {0.0f, 45.0f, 75.0f}) {
+    const Vec3 wo = direction(theta, 1.0f);
+    const double fresnel = fresnel_dielectric(wo.z, 1.0, 1.5);
+    // Lambert: exactly the albedo (every weight is the albedo).
+    EXPECT_NEAR(albedo(*make_bsdf(DiffuseMaterial{{0.3f, 0.6f, 0.9f}}), wo, 1, kN), 0.6, 1e-6);
+    // Glass: reflection + transmission = 1, and the reflected fraction is F.
+    const auto glass = make_bsdf(DielectricMaterial{1.5f});
+    EXPECT_NEAR(albedo(*glass, wo, 0, kN), 1.0, 1e-5);
+    // Smooth plastic: F + (1 - F) albedo.
+    EXPECT_NEAR(albedo(*make_bsdf(PlasticMaterial{{0.5f, 0.5f, 0.5f}, 1.5f, 0}), wo, 0, kN), fresnel + (1 - fresnel) * 0.5,
+                5e-3);
+    // Smooth gold: the conductor Fresnel reflectance per channel.
+    const auto g = gold(0);
+    const Rgb f = fresnel_conductor(wo.z, g.eta, g.k);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(albedo(*make_bsdf(g), wo, k, 1000), f[k], 1e-6);
+  }
+}
+
+TEST(RenderBsdf, DielectricReflectsFresnelFractionAndRefractsBySnell) {
+  const auto glass = make_bsdf(DielectricMaterial{1.5f});
+  for (float theta : {20.0f, 60.0f}) {
+    for (bool inside : {false, true}) {
+      Vec3 wo = direction(theta, 0.3f);
+      if (inside) wo.z = -wo.z;
+      const double eta_i = inside ? 1.5 : 1.0, eta_t = inside ? 1.0 : 1.5;
+      const double f = fresnel_dielectric(std::abs(wo.z), eta_i, eta_t);
+      int reflected = 0;
+      constexpr int kN = 100000;
+      Rng rng(5, inside);
+      for (int i = 0; i < kN; ++i) {
+        const auto s = glass->sample(wo, rng.uniform_float(), {0.5f, 0.5f});
+        ASSERT_TRUE(s && s->delta);
+        if (s->wi.z * wo.z > 0) {
+          ++reflected;
+          continue;
+        }
+        // Snell: eta_i sin_i = eta_t sin_t, and the refracted ray is in the plane of incidence.
+        const double sin_i = std::sqrt(1 - double(wo.z) * wo.z), sin_t = std::sqrt(1 - double(s->wi.z) * s->wi.z);
+        ASSERT_NEAR(eta_i * sin_i, eta_t * sin_t, 1e-5);
+        ASSERT_NEAR(s->wi.x * wo.y - s->wi.y * wo.x, 0.0, 1e-6);
+        ASSERT_NEAR(s->eta, eta_t / eta_i, 1e-6);
+      }
+      // Binomial: 4 standard deviations.
+      EXPECT_NEAR(double(reflected) / kN, f, 4 * std::sqrt(f * (1 - f) / kN)) << theta << " " << inside;
+    }
+  }
+  // Past the critical angle inside the glass, everything reflects.
+  Vec3 wo = direction(60.0f, 0.0f);
+  wo.z = -wo.z;
+  for (float u : {0.0f, 0.5f, 0.999f}) {
+    const auto s = glass->sample(wo, u, {0.5f, 0.5f});
+    ASSERT_TRUE(s);
+    EXPECT_LT(s->wi.z, 0);
+    EXPECT_FLOAT_EQ(s->weight.x, 1.0f);
+  }
+}
+
+TEST(RenderBsdf, PlasticDiffuseFresnelMatchesKnownValue) {
+  // The hemispherical (cosine-weighted) Fresnel reflectance of glass n = 1.5 from outside is ~0.0918.
+  const PlasticBsdf plastic({0.5f, 0.5f, 0.5f}, 1.5f, 0.1f);
+  EXPECT_NEAR(plastic.diffuse_fresnel(), 0.0918, 5e-4);
+}
+
+TEST(RenderBsdf, RejectsOutOfRangeParameters) {
+  EXPECT_THROW(make_bsdf(DiffuseMaterial{{1.2f, 0.5f, 0.5f}}), Error);
+  EXPECT_THROW(make_bsdf(DielectricMaterial{0.0f}), Error);
+  EXPECT_THROW(make_bsdf(PlasticMaterial{{0.5f, 0.5f, 0.5f}, 1.5f, -0.1f}), Error);
+  EXPECT_THROW(make_bsdf(ConductorMaterial{{0.2f, 0.2f, -1}, {1, 1, 1}, 0.1f}), Error);
+  EXPECT_THROW(make_bsdf(MirrorMaterial{{NAN, 1, 1}}), Error);
+}
+
+}  // namespace
+}  // namespace lp::render
