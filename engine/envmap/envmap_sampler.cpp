@@ -9,29 +9,26 @@ namespace {
 
 // Pixel weights: luminance * sin(theta of the row centre), so that p(u, v) is proportional to the
 // radiance per solid angle.
-std::vector<float> sampling_weights(const Image& image, LuminanceMode mode) {
-  const int w = image.width(), h = image.height();
-  std::vector<float> weights(size_t(w) * size_t(h));
-  tbb::parallel_for(0, h, [&](int y) {
-    const auto s = float(std::sin(latlong::row_centre_theta(y, h)));
+PiecewiseConstant2D::RowFiller sampling_weights(const Image& image, LuminanceMode mode) {
+  return [&image, mode](int y, float* out) {
+    const auto s = float(std::sin(latlong::row_centre_theta(y, image.height())));
     const float* row = image.row(y);
-    float* out = &weights[size_t(y) * w];
-    for (int x = 0; x < w; ++x) out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
-  });
-  return weights;
+    for (int x = 0; x < image.width(); ++x) out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
+  };
 }
 
 // Solid-angle pdf from the unit-square density: p / (2 pi^2 sin theta). sin theta is clamped away
 // from zero so that samples at the exact pole give a large finite pdf rather than Inf.
+constexpr float kMinSinTheta = 1e-7f;
+
 float solid_angle_pdf(float density, float theta) {
-  const float s = std::max(std::sin(theta), 1e-7f);
-  return density / (2.0f * kPiF * kPiF * s);
+  return density / (2.0f * kPiF * kPiF * std::max(std::sin(theta), kMinSinTheta));
 }
 
 }  // namespace
 
 EnvMapSampler::EnvMapSampler(const EnvMap& map, LuminanceMode mode)
-    : map_(map), mode_(mode), dist_(sampling_weights(map.image(), mode), map.width(), map.height()) {}
+    : map_(map), mode_(mode), dist_(map.width(), map.height(), sampling_weights(map.image(), mode)) {}
 
 EnvSample EnvMapSampler::finish(const GridSample& g) const {
   EnvSample s;
@@ -41,8 +38,11 @@ EnvSample EnvMapSampler::finish(const GridSample& g) const {
   s.v = float(g.v);
   s.theta = float(g.v * kPi);
   s.phi = float(g.u * 2.0 * kPi);
-  s.direction = latlong::direction_from_angles(s.theta, s.phi);
-  s.pdf = solid_angle_pdf(g.density, s.theta);
+  float sin_theta, cos_theta, sin_phi, cos_phi;
+  ::sincosf(s.theta, &sin_theta, &cos_theta);
+  ::sincosf(s.phi, &sin_phi, &cos_phi);
+  s.direction = {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta};
+  s.pdf = g.density / (2.0f * kPiF * kPiF * std::max(sin_theta, kMinSinTheta));
   s.radiance = map_.image().at(g.x, g.y);
   return s;
 }

@@ -31,34 +31,37 @@ void AliasTable2D::build(const double* weights, int n, Entry* out) {
   for (uint32_t i : small) out[i] = {1.0f, i};  // only rounding leftovers
 }
 
-AliasTable2D::AliasTable2D(const PiecewiseConstant2D& dist)
-    : dist_(dist), width_(dist.width()), height_(dist.height()) {
+AliasTable2D::AliasTable2D(const PiecewiseConstant2D& dist) : width_(dist.width()), height_(dist.height()) {
   rows_.resize(size_t(height_));
   build(dist.row_weight_sums().data(), height_, rows_.data());
   columns_.resize(size_t(height_) * size_t(width_));
   tbb::parallel_for(0, height_, [&](int y) {
     std::vector<double> w(static_cast<size_t>(width_));
+    std::vector<Entry> entries(static_cast<size_t>(width_));
     for (int x = 0; x < width_; ++x) w[size_t(x)] = dist.density(x, y);
-    build(w.data(), width_, &columns_[size_t(y) * width_]);
+    build(w.data(), width_, entries.data());
+    ColumnEntry* out = &columns_[size_t(y) * width_];
+    for (int x = 0; x < width_; ++x) {
+      const Entry e = entries[size_t(x)];
+      out[x] = {e, dist.density(x, y), dist.density(int(e.alias), y)};
+    }
   });
 }
 
-// The high 32 bits pick the slot (multiply-shift, no modulo bias worth speaking of); the low 24
-// bits are the coin for the threshold.
-uint32_t AliasTable2D::pick(const Entry* table, int n, uint64_t r) {
-  const auto slot = uint32_t(((r >> 32) * uint64_t(n)) >> 32);
-  const float coin = float(r & 0xffffff) * 0x1p-24f;
-  const Entry& e = table[slot];
-  return coin < e.threshold ? slot : e.alias;
-}
+// The high 32 bits pick the slot (multiply-shift), the low 24 bits are the coin for the threshold.
+bool AliasTable2D::keep(const Entry& e, uint64_t r) { return float(r & 0xffffff) * 0x1p-24f < e.threshold; }
 
 GridSample AliasTable2D::sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const {
   GridSample s;
-  s.y = int(pick(rows_.data(), height_, r_row));
-  s.x = int(pick(&columns_[size_t(s.y) * width_], width_, r_col));
+  const uint32_t row_slot = slot(height_, r_row);
+  s.y = int(keep(rows_[row_slot], r_row) ? row_slot : rows_[row_slot].alias);
+  const uint32_t col_slot = slot(width_, r_col);
+  const ColumnEntry& c = columns_[size_t(s.y) * width_ + col_slot];
+  const bool self = keep(c.entry, r_col);
+  s.x = int(self ? col_slot : c.entry.alias);
+  s.density = self ? c.density_self : c.density_alias;
   s.u = (s.x + double(fu)) / width_;
   s.v = (s.y + double(fv)) / height_;
-  s.density = dist_.density(s.x, s.y);
   return s;
 }
 

@@ -21,13 +21,18 @@ class AliasTable2D {
     float threshold;  // keep this index if the uniform is below it, else take `alias`
     uint32_t alias;
   };
+  // Column entries carry both candidates' densities, so a sample touches one 16-byte entry.
+  struct ColumnEntry {
+    Entry entry;
+    float density_self, density_alias;
+  };
   static void build(const double* weights, int n, Entry* out);
-  static uint32_t pick(const Entry* table, int n, uint64_t r);
+  static bool keep(const Entry& e, uint64_t r);
+  static uint32_t slot(int n, uint64_t r) { return uint32_t(((r >> 32) * uint64_t(n)) >> 32); }
 
-  const PiecewiseConstant2D& dist_;
   int width_, height_;
-  std::vector<Entry> rows_;     // height
-  std::vector<Entry> columns_;  // height * width
+  std::vector<Entry> rows_;           // height
+  std::vector<ColumnEntry> columns_;  // height * width
 };
 
 }  // namespace lp

@@ -26,14 +26,10 @@ double build_cdf(const float* w, int n, float* cdf) {
     cdf[i + 1] = float(sum);
   }
   if (sum > 0) {
-    const double inv = 1.0 / sum;
-    double run = 0;
-    for (int i = 0; i < n; ++i) {
-      run += w[i];
-      cdf[i + 1] = float(run * inv);
-    }
+    const auto inv = float(1.0 / sum);
+    for (int i = 1; i < n; ++i) cdf[i] *= inv;
   } else {
-    for (int i = 1; i <= n; ++i) cdf[i] = float(i) / float(n);
+    for (int i = 1; i < n; ++i) cdf[i] = float(i) / float(n);
   }
   cdf[n] = 1.0f;
   return sum;
@@ -42,13 +38,23 @@ double build_cdf(const float* w, int n, float* cdf) {
 }  // namespace
 
 PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> weights, int width, int height)
+    : PiecewiseConstant2D(width, height, [&](int y, float* out) {
+        if (weights.size() != size_t(width) * size_t(height))
+          throw Error(ErrorKind::InvalidArgument, "distribution weights do not match the grid size");
+        std::copy_n(&weights[size_t(y) * width], width, out);
+      }) {}
+
+PiecewiseConstant2D::PiecewiseConstant2D(int width, int height, const RowFiller& fill_row)
     : width_(width), height_(height) {
-  if (width <= 0 || height <= 0 || weights.size() != size_t(width) * size_t(height))
-    throw Error(ErrorKind::InvalidArgument, "distribution weights do not match the grid size");
+  if (width <= 0 || height <= 0) throw Error(ErrorKind::InvalidArgument, "distribution grid must not be empty");
+  const size_t cells = size_t(width) * size_t(height);
   row_sums_.resize(size_t(height));
-  conditional_cdf_.resize(size_t(height) * size_t(width + 1));
+  density_.reset(new float[cells]);
+  conditional_cdf_.reset(new float[size_t(height) * size_t(width + 1)]);
   tbb::parallel_for(0, height, [&](int y) {
-    row_sums_[size_t(y)] = build_cdf(&weights[size_t(y) * width], width, &conditional_cdf_[size_t(y) * (width + 1)]);
+    float* row = &density_[size_t(y) * width];
+    fill_row(y, row);
+    row_sums_[size_t(y)] = build_cdf(row, width, &conditional_cdf_[size_t(y) * (width + 1)]);
   });
   for (double s : row_sums_) total_ += s;
   if (!(total_ > 0)) throw Error(ErrorKind::InvalidData, "the map has no energy to sample (every weight is zero)");
@@ -57,10 +63,10 @@ PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> weights, int wid
   marginal_cdf_.resize(size_t(height) + 1);
   build_cdf(row_weights.data(), height, marginal_cdf_.data());
 
-  density_.resize(weights.size());
-  const double scale = double(width) * double(height) / total_;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, weights.size(), 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i != r.end(); ++i) density_[i] = float(weights[i] * scale);
+  // Weights become densities on the unit square: weight / mean weight.
+  const auto scale = float(double(width) * double(height) / total_);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, cells, 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) density_[i] *= scale;
   });
 }
 

@@ -3,6 +3,8 @@
 // a marginal distribution over rows and a conditional distribution over the columns of each row,
 // sampled by inverting the CDFs (monotone, so stratified and low-discrepancy points stay so).
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -18,6 +20,10 @@ class PiecewiseConstant2D {
  public:
   // `weights` is row-major, width * height. Throws lp::Error(InvalidData) if all are zero.
   PiecewiseConstant2D(std::span<const float> weights, int width, int height);
+  // `fill_row(y, out)` writes the width weights of row y; rows are filled in parallel, each one
+  // straight into the density table and turned into its CDF while still in cache.
+  using RowFiller = std::function<void(int y, float* out)>;
+  PiecewiseConstant2D(int width, int height, const RowFiller& fill_row);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -28,6 +34,7 @@ class PiecewiseConstant2D {
 
   // Row probabilities (sum 1) and the marginal CDF (height + 1 entries, 0 .. 1).
   std::span<const float> marginal_cdf() const { return marginal_cdf_; }
+  std::span<const float> densities() const { return {density_.get(), size_t(width_) * size_t(height_)}; }
   double row_probability(int y) const { return double(marginal_cdf_[y + 1]) - marginal_cdf_[y]; }
   std::span<const double> row_weight_sums() const { return row_sums_; }
   double total_weight() const { return total_; }
@@ -39,8 +46,9 @@ class PiecewiseConstant2D {
   double total_ = 0;
   std::vector<double> row_sums_;
   std::vector<float> marginal_cdf_;     // height + 1
-  std::vector<float> conditional_cdf_;  // height * (width + 1)
-  std::vector<float> density_;          // width * height
+  // Large tables are left uninitialised on allocation (every entry is written once).
+  std::unique_ptr<float[]> conditional_cdf_;  // height * (width + 1)
+  std::unique_ptr<float[]> density_;          // width * height
 };
 
 }  // namespace lp
