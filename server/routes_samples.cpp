@@ -34,6 +34,7 @@ bool next_chunk(SampleStream& s, std::string& out) {
   const uint64_t n = std::min(kChunk, total - s.next);
   s.buffer.resize(n);
   generate_samples(*s.sampler, s.request.spec, s.next, s.buffer);
+  out.reserve(out.size() + n * (s.binary ? sizeof(float) * api::kSampleRecordFloats : 192));
   for (uint64_t k = 0; k < n; ++k) {
     if (s.binary) {
       api::append_sample_binary(out, s.buffer[k]);

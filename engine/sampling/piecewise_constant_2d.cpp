@@ -49,10 +49,10 @@ PiecewiseConstant2D::PiecewiseConstant2D(int width, int height, const RowFiller&
   if (width <= 0 || height <= 0) throw Error(ErrorKind::InvalidArgument, "distribution grid must not be empty");
   const size_t cells = size_t(width) * size_t(height);
   row_sums_.resize(size_t(height));
-  density_.reset(new float[cells]);
+  weight_.reset(new float[cells]);
   conditional_cdf_.reset(new float[size_t(height) * size_t(width + 1)]);
   tbb::parallel_for(0, height, [&](int y) {
-    float* row = &density_[size_t(y) * width];
+    float* row = &weight_[size_t(y) * width];
     fill_row(y, row);
     row_sums_[size_t(y)] = build_cdf(row, width, &conditional_cdf_[size_t(y) * (width + 1)]);
   });
@@ -63,11 +63,8 @@ PiecewiseConstant2D::PiecewiseConstant2D(int width, int height, const RowFiller&
   marginal_cdf_.resize(size_t(height) + 1);
   build_cdf(row_weights.data(), height, marginal_cdf_.data());
 
-  // Weights become densities on the unit square: weight / mean weight.
-  const auto scale = float(double(width) * double(height) / total_);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, cells, 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i != r.end(); ++i) density_[i] *= scale;
-  });
+  // Density on the unit square = weight / mean weight (applied on lookup: no pass over the table).
+  density_scale_ = float(double(width) * double(height) / total_);
 }
 
 GridSample PiecewiseConstant2D::sample(float u1, float u2) const {

@@ -30,11 +30,10 @@ class PiecewiseConstant2D {
 
   // u1 picks the column within the row, u2 picks the row. Both in [0, 1).
   GridSample sample(float u1, float u2) const;
-  float density(int x, int y) const { return density_[size_t(y) * width_ + x]; }
+  float density(int x, int y) const { return weight_[size_t(y) * width_ + x] * density_scale_; }
 
   // Row probabilities (sum 1) and the marginal CDF (height + 1 entries, 0 .. 1).
   std::span<const float> marginal_cdf() const { return marginal_cdf_; }
-  std::span<const float> densities() const { return {density_.get(), size_t(width_) * size_t(height_)}; }
   double row_probability(int y) const { return double(marginal_cdf_[y + 1]) - marginal_cdf_[y]; }
   std::span<const double> row_weight_sums() const { return row_sums_; }
   double total_weight() const { return total_; }
@@ -48,7 +47,8 @@ class PiecewiseConstant2D {
   std::vector<float> marginal_cdf_;     // height + 1
   // Large tables are left uninitialised on allocation (every entry is written once).
   std::unique_ptr<float[]> conditional_cdf_;  // height * (width + 1)
-  std::unique_ptr<float[]> density_;          // width * height
+  std::unique_ptr<float[]> weight_;           // width * height
+  float density_scale_ = 0;                   // weight -> density on the unit square
 };
 
 }  // namespace lp
