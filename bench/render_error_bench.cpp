@@ -2,8 +2,10 @@
 // same scene in Blender Cycles): renders a converged reference, then 1, 2, 4, ... spp, and prints for
 // each the render time and the RMSE against the reference (relative to the reference's mean), over the
 // pixels the reference covers (the map is not visible to the camera, as a transparent film in Cycles).
-// Usage: render_error_bench [preset=sphere] [mode=envmap] [size=128] [ref_spp=8192] [max_spp=1024]
+// Usage: render_error_bench [preset=sphere] [mode=envmap] [size=64] [ref_spp=4096] [max_spp=256]
 //                           [threads=2] [out_dir]   (out_dir: writes reference.exr and spp_<n>.exr)
+// Arguments starting with "--" (Google Benchmark flags from bench/run_all.sh) are ignored. The Cycles
+// comparison in the README used: render_error_bench sphere envmap 128 4096 1024 2
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
@@ -65,13 +68,17 @@ double relative_rmse(const Image& a, const Image& ref) {
 }
 
 int run(int argc, char** argv) {
-  const std::string preset = argc > 1 ? argv[1] : "sphere";
-  const std::string mode = argc > 2 ? argv[2] : "envmap";
-  const int size = argc > 3 ? std::atoi(argv[3]) : 128;
-  const int ref_spp = argc > 4 ? std::atoi(argv[4]) : 8192;
-  const int max_spp = argc > 5 ? std::atoi(argv[5]) : 1024;
-  const int threads = argc > 6 ? std::atoi(argv[6]) : 2;
-  const std::filesystem::path out_dir = argc > 7 ? argv[7] : "";
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--", 0) != 0) args.emplace_back(argv[i]);
+  const auto arg = [&](size_t i, const char* fallback) { return i < args.size() ? args[i] : std::string(fallback); };
+  const std::string preset = arg(0, "sphere");
+  const std::string mode = arg(1, "envmap");
+  const int size = std::atoi(arg(2, "64").c_str());
+  const int ref_spp = std::atoi(arg(3, "4096").c_str());
+  const int max_spp = std::atoi(arg(4, "256").c_str());
+  const int threads = std::atoi(arg(5, "2").c_str());
+  const std::filesystem::path out_dir = arg(6, "");
   const auto scene = scene_preset(preset);
   if (!scene || !kModes.count(mode)) {
     std::fprintf(stderr, "unknown preset or mode\n");

@@ -37,7 +37,9 @@ int main(int argc, char** argv) {
   const sigset_t stop_signals = block_stop_signals();
   std::optional<lp::server::Options> options;
   try {
-    options = lp::server::parse_options(argc, argv);
+    lp::server::Options defaults;
+    defaults.web_dir = LIGHTPROBE_WEB_DIR;  // the source tree's web/, set by CMake
+    options = lp::server::parse_options(argc, argv, std::move(defaults));
   } catch (const std::exception& e) {
     std::cerr << "lightprobe-server: " << e.what() << "\n";
     return 2;

@@ -17,6 +17,7 @@ Usage: lightprobe-server [options]
   --port N               port (default 8080; 0 picks a free port, printed on start)
   --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
   --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
+  --web-dir DIR          static dashboard served at / (default: the source tree's web/); the API keeps /api
   --threads N            worker threads for computation (default: all cores)
   --max-upload-mb N      largest request body in MiB (default 512)
   --max-pixels N         largest map in pixels (default 33554432 = 8192 x 4096)
@@ -51,8 +52,8 @@ int64_t parse_count(const std::string& flag, const std::string& value, int64_t m
 
 }  // namespace
 
-std::optional<Options> parse_options(int argc, char** argv) {
-  Options o;
+std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
+  Options o = std::move(defaults);
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     auto value = [&]() -> std::string {
@@ -79,6 +80,8 @@ std::optional<Options> parse_options(int argc, char** argv) {
       if (eq == std::string::npos || eq == 0 || eq + 1 == v.size())
         throw std::invalid_argument("--load takes NAME=PATH, got '" + v + "'");
       o.loads.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+    } else if (flag == "--web-dir") {
+      o.web_dir = value();
     } else if (flag == "--threads") {
       o.threads = int(parse_count(flag, value(), 1, 1024));
     } else if (flag == "--max-upload-mb") {

@@ -14,6 +14,7 @@ struct Options {
   int port = 8080;  // 0 = any free port (printed on start)
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
+  std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)
   int threads = 0;                                         // 0 = all cores
   int64_t max_upload_mb = 512;
   int64_t max_pixels = int64_t{8192} * 4096;
@@ -35,8 +36,8 @@ struct Options {
   int max_event_streams = 8;       // concurrent GET .../events streams (each holds an HTTP worker)
 };
 
-// Parses argv. Returns nullopt after printing --help or --version (exit 0); throws
+// Parses argv over `defaults`. Returns nullopt after printing --help or --version (exit 0); throws
 // std::invalid_argument with a message for a bad flag (exit 2).
-std::optional<Options> parse_options(int argc, char** argv);
+std::optional<Options> parse_options(int argc, char** argv, Options defaults = {});
 
 }  // namespace lp::server

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <stdexcept>
 #include <thread>
 
@@ -66,8 +67,21 @@ Server::Server(App& app) : app_(app), router_(http_) {
   register_median_cut_routes(router_, app_);
 }
 
+// Static files are looked up before the routes, but web/ holds no api/ folder, so every /api path
+// still reaches its route or the JSON 404.
+void Server::mount_web_dir(const std::filesystem::path& dir) {
+  if (dir.empty()) return;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec) || !http_.set_mount_point("/", dir.string(), {{"Cache-Control", "no-cache"}})) {
+    spdlog::warn("no dashboard: {} is not a readable directory (serving the API only)", dir.string());
+    return;
+  }
+  spdlog::info("dashboard: serving {} at /", dir.string());
+}
+
 int Server::bind() {
   const auto& o = app_.options;
+  mount_web_dir(o.web_dir);
   const int port = o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0) throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port));
   return port;

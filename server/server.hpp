@@ -1,5 +1,6 @@
 #pragma once
 // The HTTP server: routes, limits, request logging, graceful stop.
+#include <filesystem>
 #include <memory>
 
 #include <httplib.h>
@@ -21,6 +22,8 @@ class Server {
   const Router& router() const { return router_; }
 
  private:
+  void mount_web_dir(const std::filesystem::path& dir);
+
   App& app_;
   httplib::Server http_;
   Router router_;

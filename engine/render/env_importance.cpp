@@ -92,16 +92,20 @@ ImportanceSample EnvImportance::sample(float u1, float u2) const {
   const double du = (double(u1) - row[x].cdf) / (double(row[x + 1].cdf) - row[x].cdf);
   const auto u = float((x + std::clamp(du, 0.0, double(kOneMinusEpsilon))) / width_);
   const auto v = float((y + std::clamp(dv, 0.0, double(kOneMinusEpsilon))) / height_);
+  // latlong::direction, keeping sin(theta) for the pdf.
+  const float sin_theta = std::sin(v * kPiF), cos_theta = std::cos(v * kPiF), phi = u * 2.0f * kPiF;
   ImportanceSample s;
-  s.direction = latlong::direction({u, v});
-  s.pdf = row[x].pdf_factor / std::max(std::sin(v * kPiF), 1e-7f);
+  s.direction = {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+  s.pdf = row[x].pdf_factor / std::max(sin_theta, 1e-7f);
   s.radiance = map_.image().at(x, y);
   return s;
 }
 
 EnvPixel EnvImportance::locate(Vec3 direction) const {
   const latlong::Uv uv = latlong::uv(direction);
-  EnvPixel p{latlong::pixel_x(uv.u, width_), latlong::pixel_y(uv.v, height_), std::max(std::sin(uv.v * kPiF), 1e-7f)};
+  // sin(theta) = hypot(x, y) / |d|, the same value as sin(uv.v * pi) without another sine.
+  const float sin_theta = std::sqrt(direction.x * direction.x + direction.y * direction.y) / length(direction);
+  EnvPixel p{latlong::pixel_x(uv.u, width_), latlong::pixel_y(uv.v, height_), std::max(sin_theta, 1e-7f)};
   __builtin_prefetch(&cell(p.x, p.y));
   __builtin_prefetch(map_.image().row(p.y) + 3 * p.x);
   return p;

@@ -60,15 +60,14 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     delta_chain = delta_chain && s->delta;
     bsdf_pdf = s->pdf;
     eta_scale *= s->eta * s->eta;
-    const Vec3 wi = normalize(frame.to_world(s->wi));
-    ray = {EmbreeScene::offset_origin(*hit, wi), wi};
-    if (lit_by_map || delta_chain) escape = env_.locate(wi);
-
     if (depth + 1 >= kRouletteDepth) {
       const float q = std::min(1.0f, max_component(beta) * eta_scale);
       if (u_roulette >= q) break;
       beta = beta / q;
     }
+    const Vec3 wi = normalize(frame.to_world(s->wi));
+    ray = {EmbreeScene::offset_origin(*hit, wi), wi};
+    if (lit_by_map || delta_chain) escape = env_.locate(wi);
   }
   return result;
 }

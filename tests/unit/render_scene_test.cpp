@@ -213,20 +213,22 @@ TEST(RenderScene, MapRotationTurnsTheLightAboutZ) {
   // degrees the cap moves to +y (behind the sphere): the facing point is dark; by -90 it moves to -y
   // (the camera side): the facing point is lit. By 180 the left side is lit.
   const auto map = test::make_map(128, [](Vec3 d) { return d.x > 0.9f ? Rgb{4, 4, 4} : Rgb{0, 0, 0}; });
-  const auto render_rotated = [&](float degrees) {
-    Lighting l = lighting(LightingMode::EnvMap);
-    l.rotation_deg = degrees;
-    l.visible = false;
-    return test::render(*scene_preset("sphere"), l, settings(32), map, 16);
-  };
-  const Image none = render_rotated(0), plus90 = render_rotated(90), minus90 = render_rotated(-90),
-              half_turn = render_rotated(180);
-  EXPECT_GT(none.at(25, 16).x, 0.3f);
-  EXPECT_EQ(none.at(6, 16).x, 0.0f);
-  EXPECT_EQ(plus90.at(16, 16).x, 0.0f);
-  EXPECT_GT(minus90.at(16, 16).x, 0.3f);
-  EXPECT_GT(half_turn.at(6, 16).x, 0.3f);
-  EXPECT_EQ(half_turn.at(25, 16).x, 0.0f);
+  for (LightingMode mode : {LightingMode::EnvMap, LightingMode::MedianCutAll}) {
+    const auto render_rotated = [&](float degrees) {
+      Lighting l = lighting(mode, 16);
+      l.rotation_deg = degrees;
+      l.visible = false;
+      return test::render(*scene_preset("sphere"), l, settings(32), map, 16);
+    };
+    const Image none = render_rotated(0), plus90 = render_rotated(90), minus90 = render_rotated(-90),
+                half_turn = render_rotated(180);
+    EXPECT_GT(none.at(25, 16).x, 0.3f) << int(mode);
+    EXPECT_EQ(none.at(6, 16).x, 0.0f) << int(mode);
+    EXPECT_EQ(plus90.at(16, 16).x, 0.0f) << int(mode);
+    EXPECT_GT(minus90.at(16, 16).x, 0.3f) << int(mode);
+    EXPECT_GT(half_turn.at(6, 16).x, 0.3f) << int(mode);
+    EXPECT_EQ(half_turn.at(25, 16).x, 0.0f) << int(mode);
+  }
 }
 
 TEST(RenderScene, GlassSphereInvertsTheSky) {

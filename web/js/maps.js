@@ -1,0 +1,99 @@
+// The Maps panel: the loaded maps, the selected one's metadata and preview, upload and delete.
+import { api, apiUrl, loadImage } from './api.js';
+import { $, el, num, rgb, busy, debounce, showError, latestOnly } from './dom.js';
+import { state, on, setMaps, selectMap, currentMap } from './state.js';
+
+const panel = () => $('#maps-panel');
+
+export async function refreshMaps() {
+  await busy(panel(), async () => {
+    const { envmaps } = await api('/envmaps');
+    setMaps(envmaps);
+  });
+}
+
+function swatch(color) {
+  const max = Math.max(...color, 1e-30);
+  const c = color.map((x) => Math.round(255 * Math.pow(x / max, 1 / 2.2)));
+  return el('span', { class: 'swatch', style: `background: rgb(${c.join(',')})`, title: 'hue of the mean radiance' });
+}
+
+function renderList(maps) {
+  const rows = maps.map((m) =>
+    el('tr', { class: m.id === state.map ? 'selected' : '', dataset: { id: m.id }, onclick: () => selectMap(m.id) },
+      el('td', {}, swatch(m.mean_radiance), m.id),
+      el('td', {}, `${m.width}×${m.height}`),
+      el('td', {}, m.format),
+      el('td', { class: 'num' }, rgb(m.power)),
+      el('td', {}, el('button', { type: 'button', class: 'danger small', title: `unload ${m.id}`, onclick: (e) => askDelete(e, m.id) }, 'Delete'))));
+  if (!rows.length) rows.push(el('tr', {}, el('td', { colspan: 5, class: 'muted' }, 'no maps loaded: upload one below')));
+  $('#map-list tbody').replaceChildren(...rows);
+}
+
+// Two clicks delete: the first arms the button for three seconds.
+async function askDelete(event, id) {
+  event.stopPropagation();
+  const button = event.currentTarget;
+  if (!button.classList.contains('armed')) {
+    button.classList.add('armed');
+    button.textContent = 'Sure?';
+    setTimeout(() => { button.classList.remove('armed'); button.textContent = 'Delete'; }, 3000);
+    return;
+  }
+  await busy(panel(), () => api(`/envmaps/${encodeURIComponent(id)}`, { method: 'DELETE' }));
+  await refreshMaps();
+}
+
+function renderMeta() {
+  const m = currentMap();
+  const meta = $('#map-meta');
+  if (!m) {
+    meta.replaceChildren();
+    $('#map-image').removeAttribute('src');
+    return;
+  }
+  const items = [
+    ['map', m.id], ['size', `${m.width} × ${m.height} (${m.format})`], ['source', m.source],
+    ['power', rgb(m.power)], ['mean radiance', rgb(m.mean_radiance)], ['max luminance', num(m.max_luminance)],
+  ];
+  if (m.clamped_negative_values) items.push(['clamped negatives', String(m.clamped_negative_values)]);
+  meta.replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
+}
+
+const showPreview = latestOnly(async (current) => {
+  if (!state.map) return;
+  const exposure = $('#map-exposure').valueAsNumber;
+  $('#map-exposure-value').textContent = exposure > 0 ? `+${exposure}` : String(exposure);
+  await busy(panel(), () =>
+    loadImage($('#map-image'), apiUrl(`/envmaps/${encodeURIComponent(state.map)}/image`, { format: 'png', exposure }), current));
+});
+
+// A file name's stem, made a valid map name.
+const nameFromFile = (file) => file.name.replace(/\.[^.]*$/, '').replace(/[^A-Za-z0-9._-]/g, '_').replace(/^\./, '_').slice(0, 64);
+
+async function upload(event) {
+  event.preventDefault();
+  const file = $('#upload-file').files[0];
+  if (!file) {
+    showError(panel(), 'choose an EXR, PFM or Radiance HDR file first');
+    return;
+  }
+  const name = $('#upload-name').value.trim() || nameFromFile(file);
+  const map = await busy(panel(), () =>
+    api(`/envmaps?name=${encodeURIComponent(name)}`, { method: 'POST', body: file, headers: { 'Content-Type': 'application/octet-stream' } }));
+  if (!map) return;
+  $('#upload-form').reset();
+  await refreshMaps();
+  selectMap(map.id);
+}
+
+export function initMaps() {
+  on('maps', (maps) => { renderList(maps); renderMeta(); });
+  on('map', () => { renderList(state.maps); renderMeta(); showPreview(); });
+  $('#map-exposure').addEventListener('input', debounce(() => showPreview(), 120));
+  $('#upload-file').addEventListener('change', () => {
+    const file = $('#upload-file').files[0];
+    if (file && !$('#upload-name').value) $('#upload-name').value = nameFromFile(file);
+  });
+  $('#upload-form').addEventListener('submit', upload);
+}

@@ -1,0 +1,46 @@
+// The Median-cut panel: Debevec's regions and lights for the selected map, with the lights' energies.
+import { api, apiUrl, loadImage } from './api.js';
+import { $, el, num, rgb, busy, formValues, latestOnly, autoUpdate } from './dom.js';
+import { state, on } from './state.js';
+
+const panel = () => $('#median-cut-panel');
+const deg = (rad) => (rad * 180) / Math.PI;
+
+function showStats(result) {
+  const spread = result.energy_min > 0 ? result.energy_max / result.energy_min : Infinity;
+  const items = [
+    ['lights', `${result.count} lights`],
+    ['energy min / max', `${num(result.energy_min)} / ${num(result.energy_max)} (×${num(spread, 3)})`],
+    ['total power', rgb(result.power)],
+    ['time', `${num(result.elapsed_ms, 3)} ms${result.cached ? ' (cached)' : ''}`],
+  ];
+  $('#median-cut-stats').replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
+  const brightest = [...result.lights].sort((a, b) => b.energy - a.energy).slice(0, 5);
+  $('#median-cut-lights tbody').replaceChildren(...brightest.map((l, i) => {
+    const [x, y, z] = l.direction;
+    const r = l.region;
+    return el('tr', {},
+      el('td', {}, `#${i + 1}  (${l.pixel[0]}, ${l.pixel[1]})`),
+      el('td', { class: 'num' }, num(deg(Math.acos(Math.max(-1, Math.min(1, z)))), 3)),
+      el('td', { class: 'num' }, num((deg(Math.atan2(y, x)) + 360) % 360, 3)),
+      el('td', { class: 'num' }, rgb(l.power)),
+      el('td', { class: 'num' }, `${r.x1 - r.x0}×${r.y1 - r.y0}`));
+  }));
+}
+
+const update = latestOnly(async (current) => {
+  if (!state.map) return;
+  const { count, placement, split, luminance, style, exposure } = formValues($('#median-cut-form'));
+  const id = encodeURIComponent(state.map);
+  await busy(panel(), async () => {
+    const result = await api(`/envmaps/${id}/median-cut`, { method: 'POST', json: { count, placement, split, luminance } });
+    if (!current()) return;
+    showStats(result);
+    await loadImage($('#median-cut-image'), apiUrl(`/envmaps/${id}/median-cut.png`, { count, placement, split, luminance, style, exposure }), current);
+  });
+});
+
+export function initMedianCut() {
+  on('map', () => update());
+  autoUpdate($('#median-cut-form'), () => update());
+}

@@ -1,0 +1,159 @@
+// The Renders panel: submit a preset scene, follow the job through its server-sent events (progress
+// bar, image refreshed after every pass), cancel it, and list every job.
+import { api, apiUrl, loadImage, API } from './api.js';
+import { $, el, num, bigNum, busy, formValues, showError } from './dom.js';
+import { state } from './state.js';
+
+const panel = () => $('#renders-panel');
+const ACTIVE = new Set(['queued', 'running']);
+
+let watched = null; // {id, source, poll, shownSpp}
+
+function exposure() {
+  return formValues($('#render-form')).exposure || 0;
+}
+
+function showImage(job, force = false) {
+  if (!job.image_available || !watched || watched.id !== job.id) return;
+  if (!force && watched.shownSpp === job.spp_done) return;
+  watched.shownSpp = job.spp_done;
+  const id = job.id;
+  const src = apiUrl(`/renders/${id}/image`, { format: 'png', exposure: exposure(), spp: job.spp_done });
+  loadImage($('#render-image'), src, () => watched && watched.id === id).catch((e) => showError(panel(), e));
+}
+
+function showJob(job) {
+  if (!watched || watched.id !== job.id) return;
+  const done = job.status === 'done';
+  const percent = Math.round((done ? 1 : job.progress) * 1000) / 10;
+  const bar = $('#render-progress');
+  bar.style.width = `${percent}%`;
+  bar.className = job.status;
+  const cancelling = job.cancel_requested && ACTIVE.has(job.status) ? ' (cancelling)' : '';
+  $('#render-status').textContent = `${job.id} · ${job.status}${cancelling} · ${percent}%`;
+  $('#render-status').dataset.status = job.status;
+  $('#render-cancel').disabled = !ACTIVE.has(job.status) || job.cancel_requested;
+  const items = [
+    ['passes', `${job.spp_done} / ${job.spp} spp`],
+    ['time', `${num(job.elapsed_s, 3)} s`],
+    ['camera samples/s', bigNum(job.samples_per_s)],
+    ['rays/s', bigNum(job.rays_per_s)],
+    ['scene', `${job.scene.preset ?? `${job.scene.objects} objects`} · ${job.lighting_mode} · ${job.envmap}`],
+  ];
+  if (job.error) items.push(['error', `${job.error.code}: ${job.error.message}`]);
+  $('#render-stats').replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
+  showImage(job);
+}
+
+function stopWatching() {
+  if (!watched) return;
+  if (watched.source) watched.source.close();
+  clearTimeout(watched.poll);
+  watched = null;
+}
+
+// Polls the status when the event stream is refused (too many streams) or drops.
+function poll(id) {
+  if (!watched || watched.id !== id) return;
+  api(`/renders/${id}`)
+    .then((job) => {
+      showJob(job);
+      if (ACTIVE.has(job.status)) watched.poll = setTimeout(() => poll(id), 500);
+      else ended(job);
+    })
+    .catch((e) => showError(panel(), e));
+}
+
+function ended(job) {
+  showJob(job);
+  showImage(job, true);
+  refreshJobs();
+}
+
+function watch(job) {
+  stopWatching();
+  watched = { id: job.id, shownSpp: -1 };
+  $('#render-image').removeAttribute('src');
+  showJob(job);
+  if (!ACTIVE.has(job.status)) {
+    ended(job);
+    return;
+  }
+  const source = new EventSource(`${API}/renders/${job.id}/events`);
+  watched.source = source;
+  let throttle = 0;
+  source.addEventListener('progress', (e) => {
+    showJob(JSON.parse(e.data));
+    if (Date.now() - throttle > 1000) {
+      throttle = Date.now();
+      refreshJobs();
+    }
+  });
+  source.addEventListener('end', (e) => {
+    source.close();
+    ended(JSON.parse(e.data));
+  });
+  source.onerror = () => {
+    source.close();
+    if (watched && watched.source === source) poll(job.id);
+  };
+}
+
+async function submit(event) {
+  event.preventDefault();
+  if (!state.map) {
+    showError(panel(), 'load a map first');
+    return;
+  }
+  const v = formValues($('#render-form'));
+  const lighting = { mode: v.mode, rotation_deg: v.rotation_deg };
+  if (v.mode.startsWith('median_cut')) lighting.lights = v.lights;
+  const body = { envmap: state.map, scene: { preset: v.preset }, lighting, width: v.width, height: v.height, spp: v.spp, max_depth: v.max_depth };
+  const job = await busy(panel(), () => api('/renders', { method: 'POST', json: body }));
+  if (!job) return;
+  watch(job);
+  refreshJobs();
+}
+
+async function cancel() {
+  if (!watched) return;
+  const job = await busy(panel(), () => api(`/renders/${watched.id}`, { method: 'DELETE' }));
+  if (job) showJob(job);
+}
+
+async function removeJob(event, job) {
+  event.stopPropagation();
+  if (watched && watched.id === job.id && !ACTIVE.has(job.status)) stopWatching();
+  await busy(panel(), () => api(`/renders/${job.id}`, { method: 'DELETE' }));
+  refreshJobs();
+}
+
+export async function refreshJobs() {
+  const list = await busy(panel(), () => api('/renders'));
+  if (!list) return;
+  const rows = [...list.renders].reverse().map((j) =>
+    el('tr', { class: watched && watched.id === j.id ? 'selected' : '', dataset: { id: j.id, status: j.status }, onclick: () => watch(j) },
+      el('td', { class: 'mono' }, j.id.slice(0, 8)),
+      el('td', {}, el('span', { class: `pill ${j.status}` }, ACTIVE.has(j.status) ? `${j.status} ${Math.round(j.progress * 100)}%` : j.status)),
+      el('td', {}, j.scene.preset ?? `${j.scene.objects} objects`),
+      el('td', {}, j.lighting_mode),
+      el('td', {}, `${j.width}×${j.height}`),
+      el('td', { class: 'num' }, `${j.spp_done}/${j.spp}`),
+      el('td', { class: 'num' }, `${num(j.elapsed_s, 3)} s`),
+      el('td', {}, el('button', { type: 'button', class: 'small', title: ACTIVE.has(j.status) ? 'cancel' : 'remove job and image', onclick: (e) => removeJob(e, j) },
+        ACTIVE.has(j.status) ? 'Cancel' : 'Remove'))));
+  if (!rows.length) rows.push(el('tr', {}, el('td', { colspan: 8, class: 'muted' }, 'no jobs yet')));
+  $('#render-jobs tbody').replaceChildren(...rows);
+}
+
+export function initRenders() {
+  const form = $('#render-form');
+  form.addEventListener('submit', submit);
+  form.exposure.addEventListener('change', () => {
+    if (watched) api(`/renders/${watched.id}`).then((job) => showImage(job, true)).catch((e) => showError(panel(), e));
+  });
+  form.mode.addEventListener('change', () => { form.lights.disabled = !form.mode.value.startsWith('median_cut'); });
+  form.lights.disabled = true;
+  $('#render-cancel').addEventListener('click', cancel);
+  refreshJobs();
+}
