@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "engine/image/byte_sink.hpp"
 #include "engine/image/hdr_guard.hpp"
 #include "engine/image/image_limits.hpp"
 
@@ -27,17 +28,9 @@ Image read_hdr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   return image;
 }
 
-namespace {
-void append_bytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::vector<uint8_t>*>(context);
-  const auto* p = static_cast<const uint8_t*>(data);
-  out->insert(out->end(), p, p + size);
-}
-}  // namespace
-
 std::vector<uint8_t> write_hdr(const Image& image) {
   std::vector<uint8_t> out;
-  if (!stbi_write_hdr_to_func(append_bytes, &out, image.width(), image.height(), 3, image.data().data()))
+  if (!stbi_write_hdr_to_func(append_to_byte_vector, &out, image.width(), image.height(), 3, image.data().data()))
     throw Error(ErrorKind::InvalidArgument, "cannot encode Radiance HDR");
   return out;
 }

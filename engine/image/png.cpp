@@ -4,17 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/core/error.hpp"
+#include "engine/image/byte_sink.hpp"
 #include "engine/image/tonemap.hpp"
 
 namespace lp {
-namespace {
-void append_bytes(void* context, void* data, int size) {
-  auto* out = static_cast<std::vector<uint8_t>*>(context);
-  const auto* p = static_cast<const uint8_t*>(data);
-  out->insert(out->end(), p, p + size);
-}
-}  // namespace
-
 std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone) {
   const ToneMapper map(tone);
   const auto src = image.data();
@@ -31,7 +24,7 @@ std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb8, int width, i
   (void)level_set;
   if (rgb8.size() != size_t(width) * size_t(height) * 3) throw Error(ErrorKind::InvalidArgument, "PNG buffer size mismatch");
   std::vector<uint8_t> out;
-  if (!stbi_write_png_to_func(append_bytes, &out, width, height, 3, rgb8.data(), width * 3))
+  if (!stbi_write_png_to_func(append_to_byte_vector, &out, width, height, 3, rgb8.data(), width * 3))
     throw Error(ErrorKind::InvalidArgument, "cannot encode PNG");
   return out;
 }

@@ -17,9 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
+#include <stb_image.h>
 
 #include "engine/image/image_io.hpp"
 #include "support/server_process.hpp"
