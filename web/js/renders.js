@@ -24,6 +24,8 @@ function showImage(job, force = false) {
 
 function showJob(job) {
   if (!watched || watched.id !== job.id) return;
+  // A late answer (the DELETE's "cancelling") must not undo the end the event stream already told.
+  if (watched.ended && ACTIVE.has(job.status)) return;
   const done = job.status === 'done';
   const percent = Math.round((done ? 1 : job.progress) * 1000) / 10;
   const bar = $('#render-progress');
@@ -65,6 +67,7 @@ function poll(id) {
 }
 
 function ended(job) {
+  if (watched && watched.id === job.id) watched.ended = true;
   showJob(job);
   showImage(job, true);
   refreshJobs();
