@@ -148,6 +148,23 @@ void BM_BatchAlias(benchmark::State& state) {
 }
 BENCHMARK(BM_BatchAlias)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The alias table in prefetched blocks, one thread (what generate_samples does per task).
+void BM_BatchAliasPrefetched(benchmark::State& state) {
+  const auto sampler = forest(int(state.range(0))).sampler(LuminanceMode::Average);
+  std::vector<EnvMapSampler::AliasBits> bits(kBatch);
+  std::vector<EnvSample> out(kBatch);
+  for (auto _ : state) {
+    for (int i = 0; i < kBatch; ++i) {
+      Rng rng(1, uint64_t(i));
+      bits[size_t(i)] = {rng.next_u64(), rng.next_u64(), rng.uniform_float(), rng.uniform_float()};
+    }
+    sampler->sample_alias(bits, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kBatch);
+}
+BENCHMARK(BM_BatchAliasPrefetched)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // What the server does: generate_samples of a whole set (parallel over the machine's cores).
 void BM_GenerateSet(benchmark::State& state) {
   const auto sampler = forest(int(state.range(0))).sampler(LuminanceMode::Average);

@@ -58,6 +58,23 @@ EnvSample EnvMapSampler::sample_alias(uint64_t r_row, uint64_t r_col, float fu, 
   return finish(alias().sample(r_row, r_col, fu, fv));
 }
 
+void EnvMapSampler::sample_alias(std::span<const AliasBits> bits, std::span<EnvSample> out) const {
+  const AliasTable2D& table = alias();
+  constexpr size_t kBlock = 32;
+  GridSample grid[kBlock];
+  for (size_t start = 0; start < bits.size(); start += kBlock) {
+    const size_t n = std::min(kBlock, bits.size() - start);
+    for (size_t k = 0; k < n; ++k)
+      __builtin_prefetch(table.column_entry_address(bits[start + k].r_row, bits[start + k].r_col));
+    for (size_t k = 0; k < n; ++k) {
+      const AliasBits& b = bits[start + k];
+      grid[k] = table.sample(b.r_row, b.r_col, b.fu, b.fv);
+      __builtin_prefetch(map_.image().row(grid[k].y) + 3 * grid[k].x);
+    }
+    for (size_t k = 0; k < n; ++k) out[start + k] = finish(grid[k]);
+  }
+}
+
 float EnvMapSampler::pdf(Vec3 direction) const {
   const latlong::Uv uv = latlong::uv(direction);
   const int x = latlong::pixel_x(uv.u, dist_.width()), y = latlong::pixel_y(uv.v, dist_.height());

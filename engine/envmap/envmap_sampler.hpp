@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <span>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/sampling/alias_table_2d.hpp"
@@ -28,6 +29,13 @@ class EnvMapSampler {
   EnvSample sample(float u1, float u2) const;
   // O(1) alias-table sample from independent random bits (for independent sample sets).
   EnvSample sample_alias(uint64_t r_row, uint64_t r_col, float fu, float fv) const;
+  // The same for many samples at once: the table entries and pixels each one needs are prefetched
+  // a block ahead, so their cache misses overlap instead of following one another.
+  struct AliasBits {
+    uint64_t r_row, r_col;
+    float fu, fv;
+  };
+  void sample_alias(std::span<const AliasBits> bits, std::span<EnvSample> out) const;
 
   // Solid-angle pdf of a direction; agrees with sample().pdf.
   float pdf(Vec3 direction) const;

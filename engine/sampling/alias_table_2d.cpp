@@ -51,6 +51,12 @@ AliasTable2D::AliasTable2D(const PiecewiseConstant2D& dist) : width_(dist.width(
 // The high 32 bits pick the slot (multiply-shift), the low 24 bits are the coin for the threshold.
 bool AliasTable2D::keep(const Entry& e, uint64_t r) { return float(r & 0xffffff) * 0x1p-24f < e.threshold; }
 
+const void* AliasTable2D::column_entry_address(uint64_t r_row, uint64_t r_col) const {
+  const uint32_t row_slot = slot(height_, r_row);
+  const uint32_t y = keep(rows_[row_slot], r_row) ? row_slot : rows_[row_slot].alias;
+  return &columns_[size_t(y) * width_ + slot(width_, r_col)];
+}
+
 GridSample AliasTable2D::sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const {
   GridSample s;
   const uint32_t row_slot = slot(height_, r_row);

@@ -15,6 +15,8 @@ class AliasTable2D {
 
   // r_row and r_col are independent uniform 64-bit integers; (fu, fv) the offsets within the cell.
   GridSample sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const;
+  // The column entry sample() will read for these bits (to prefetch it in batches).
+  const void* column_entry_address(uint64_t r_row, uint64_t r_col) const;
 
  private:
   struct Entry {

@@ -54,14 +54,11 @@ Point2 sobol_point(uint64_t seed, uint64_t index) {
 
 namespace {
 
+// Stratified and sobol points through the inverse CDF.
 EnvSample one_sample(const EnvMapSampler& sampler, const SampleSetSpec& spec, uint64_t index) {
   switch (spec.strategy) {
-    case SampleStrategy::Independent: {
-      Rng rng(spec.seed, index);
-      const uint64_t r_row = rng.next_u64(), r_col = rng.next_u64();
-      const float fu = rng.uniform_float(), fv = rng.uniform_float();
-      return sampler.sample_alias(r_row, r_col, fu, fv);
-    }
+    case SampleStrategy::Independent:
+      break;  // batched: generate_independent
     case SampleStrategy::Stratified: {
       const Point2 p = stratified_point(spec.count, spec.seed, index);
       return sampler.sample(p.u1, p.u2);
@@ -74,12 +71,31 @@ EnvSample one_sample(const EnvMapSampler& sampler, const SampleSetSpec& spec, ui
   return {};
 }
 
+// Independent samples go through the alias table in blocks, with the bits drawn first.
+void generate_independent(const EnvMapSampler& sampler, uint64_t seed, uint64_t first, std::span<EnvSample> out) {
+  std::vector<EnvMapSampler::AliasBits> bits(out.size());
+  for (size_t k = 0; k < out.size(); ++k) {
+    Rng rng(seed, first + k);
+    bits[k].r_row = rng.next_u64();
+    bits[k].r_col = rng.next_u64();
+    bits[k].fu = rng.uniform_float();
+    bits[k].fv = rng.uniform_float();
+  }
+  sampler.sample_alias(bits, out);
+}
+
 }  // namespace
 
 void generate_samples(const EnvMapSampler& sampler, const SampleSetSpec& spec, uint64_t first,
                       std::span<EnvSample> out) {
   if (spec.strategy == SampleStrategy::Sobol && spec.count > (uint64_t{1} << 32))
     throw Error(ErrorKind::InvalidArgument, "sobol sets hold at most 2^32 samples");
+  if (spec.strategy == SampleStrategy::Independent) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+      generate_independent(sampler, spec.seed, first + r.begin(), out.subspan(r.begin(), r.size()));
+    });
+    return;
+  }
   tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t k = r.begin(); k != r.end(); ++k) out[k] = one_sample(sampler, spec, first + k);
   });
