@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 
 namespace lp {
@@ -16,22 +17,16 @@ namespace {
 
 using nlohmann::json;
 
-struct Reply {
-  int status = 0;
-  std::string type, body;
-};
+using test::Reply;
 
 Reply get(const std::string& query) {
-  auto client = test::shared_server().client();
-  auto res = client->Get(("/api/v1/fresnel" + query).c_str());
-  if (!res) return {};
-  return {res->status, res->get_header_value("Content-Type"), res->body};
+  return test::reply(test::shared_server().client()->Get(("/api/v1/fresnel" + query).c_str()));
 }
 
 json get_json(const std::string& query) {
   const Reply r = get(query);
   EXPECT_EQ(r.status, 200) << query << ": " << r.body;
-  EXPECT_EQ(r.type.rfind("application/json", 0), 0u) << r.type;
+  EXPECT_EQ(r.type().rfind("application/json", 0), 0u) << r.type();
   return json::parse(r.body);
 }
 
@@ -136,7 +131,7 @@ TEST(FresnelApi, DielectricCsvIsTheSameTable) {
   const json j = get_json("?eta_i=1.45&eta_t=1.0&step=2.5");
   const Reply r = get("?eta_i=1.45&eta_t=1.0&step=2.5&format=csv");
   ASSERT_EQ(r.status, 200) << r.body;
-  EXPECT_EQ(r.type.rfind("text/csv", 0), 0u) << r.type;
+  EXPECT_EQ(r.type().rfind("text/csv", 0), 0u) << r.type();
   const auto rows = parse_csv(r.body);
   ASSERT_EQ(rows.size(), 1 + j["angles_deg"].size());
   EXPECT_EQ(rows[0], (std::vector<std::string>{"angle_deg", "rs", "rp", "unpolarized", "schlick"}));
@@ -220,7 +215,7 @@ TEST(FresnelApi, ConductorCsv) {
   const json j = get_json("?metal=copper&step=10");
   const Reply r = get("?metal=copper&step=10&format=csv");
   ASSERT_EQ(r.status, 200) << r.body;
-  EXPECT_EQ(r.type.rfind("text/csv", 0), 0u) << r.type;
+  EXPECT_EQ(r.type().rfind("text/csv", 0), 0u) << r.type();
   const auto rows = parse_csv(r.body);
   ASSERT_EQ(rows.size(), 11u);
   EXPECT_EQ(rows[0], (std::vector<std::string>{"angle_deg", "r", "g", "b", "rs_r", "rs_g", "rs_b", "rp_r",

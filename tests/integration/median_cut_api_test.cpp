@@ -11,6 +11,7 @@
 #include <stb_image.h>
 
 #include "engine/image/image_io.hpp"
+#include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -19,24 +20,14 @@ namespace {
 
 using nlohmann::json;
 
-struct Reply {
-  int status = 0;
-  std::string type, body;
-  json body_json() const { return json::parse(body); }
-};
+using test::Reply;
 
 Reply post(const test::ServerProcess& s, const std::string& map, const std::string& body) {
-  auto res = s.client()->Post(("/api/v1/envmaps/" + map + "/median-cut").c_str(), body, "application/json");
-  if (!res) return {};
-  return {res->status, res->get_header_value("Content-Type"), res->body};
+  return test::reply(s.client()->Post(("/api/v1/envmaps/" + map + "/median-cut").c_str(), body, "application/json"));
 }
 Reply post(const std::string& map, const std::string& body) { return post(test::shared_server(), map, body); }
 
-Reply get(const test::ServerProcess& s, const std::string& path) {
-  auto res = s.client()->Get(path.c_str());
-  if (!res) return {};
-  return {res->status, res->get_header_value("Content-Type"), res->body};
-}
+Reply get(const test::ServerProcess& s, const std::string& path) { return test::reply(s.client()->Get(path.c_str())); }
 Reply get_png(const std::string& map, const std::string& query) {
   return get(test::shared_server(), "/api/v1/envmaps/" + map + "/median-cut.png" + query);
 }
@@ -73,7 +64,7 @@ void expect_field_error(const Reply& r, const std::string& field, const std::str
 TEST(MedianCutApi, LightsOfForestAddUpToTheMapPower) {
   const Reply r = post("forest_exr", R"({"count":64,"placement":"centroid","split":"median","luminance":"average"})");
   ASSERT_EQ(r.status, 200) << r.body;
-  EXPECT_EQ(r.type.rfind("application/json", 0), 0u);
+  EXPECT_EQ(r.type().rfind("application/json", 0), 0u);
   const json j = r.body_json();
   EXPECT_EQ(j["count"], 64);
   EXPECT_EQ(j["placement"], "centroid");
@@ -156,7 +147,7 @@ TEST(MedianCutApi, DefaultsAndRepeatsComeFromTheCache) {
 TEST(MedianCutApi, PicturesHaveTheMapSize) {
   const Reply regions = get_png("courtyard_exr", "?count=16&style=regions");
   ASSERT_EQ(regions.status, 200) << regions.body;
-  EXPECT_EQ(regions.type, "image/png");
+  EXPECT_EQ(regions.type(), "image/png");
   const Png r = decode_png(regions.body);
   ASSERT_EQ(r.width, 1024);
   ASSERT_EQ(r.height, 512);

@@ -20,6 +20,7 @@
 #include <stb_image.h>
 
 #include "engine/image/image_io.hpp"
+#include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -70,21 +71,8 @@ test::ServerProcess& small_server() {
   return server;
 }
 
-struct Reply {
-  int status = 0;
-  std::string body;
-  httplib::Headers headers;
-  json body_json() const { return json::parse(body); }
-  std::string header(const std::string& name) const {
-    auto it = headers.find(name);
-    return it == headers.end() ? "" : it->second;
-  }
-};
-
-Reply reply(const httplib::Result& res) {
-  if (!res) return {};
-  return {res->status, res->body, res->headers};
-}
+using test::reply;
+using test::Reply;
 
 Reply get(const test::ServerProcess& s, const std::string& path) { return reply(s.client()->Get(path.c_str())); }
 Reply del(const test::ServerProcess& s, const std::string& path) { return reply(s.client()->Delete(path.c_str())); }
