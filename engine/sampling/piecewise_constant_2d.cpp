@@ -37,13 +37,6 @@ double build_cdf(const float* w, int n, float* cdf) {
 
 }  // namespace
 
-PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> weights, int width, int height)
-    : PiecewiseConstant2D(width, height, [&](int y, float* out) {
-        if (weights.size() != size_t(width) * size_t(height))
-          throw Error(ErrorKind::InvalidArgument, "distribution weights do not match the grid size");
-        std::copy_n(&weights[size_t(y) * width], width, out);
-      }) {}
-
 PiecewiseConstant2D::PiecewiseConstant2D(int width, int height, const RowFiller& fill_row)
     : width_(width), height_(height) {
   if (width <= 0 || height <= 0) throw Error(ErrorKind::InvalidArgument, "distribution grid must not be empty");

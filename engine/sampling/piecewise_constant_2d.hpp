@@ -18,10 +18,9 @@ struct GridSample {
 
 class PiecewiseConstant2D {
  public:
-  // `weights` is row-major, width * height. Throws lp::Error(InvalidData) if all are zero.
-  PiecewiseConstant2D(std::span<const float> weights, int width, int height);
-  // `fill_row(y, out)` writes the width weights of row y; rows are filled in parallel, each one
-  // straight into the density table and turned into its CDF while still in cache.
+  // `fill_row(y, out)` writes the width non-negative weights of row y; rows are filled in parallel,
+  // each one straight into the weight table and turned into its CDF while still in cache.
+  // Throws lp::Error(InvalidData) if every weight is zero.
   using RowFiller = std::function<void(int y, float* out)>;
   PiecewiseConstant2D(int width, int height, const RowFiller& fill_row);
 
