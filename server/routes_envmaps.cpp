@@ -1,5 +1,6 @@
 // Environment maps: list, load (upload or data-dir path), metadata, delete, image, distribution.
 #include "api/api_error.hpp"
+#include "api/envmap_load_request.hpp"
 #include "api/envmap_schema.hpp"
 #include "api/preview_params.hpp"
 #include "server/data_dir.hpp"
@@ -19,12 +20,9 @@ bool is_json_body(const httplib::Request& req) {
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_json(App& app, const httplib::Request& req) {
-  const api::Json body = api::parse_json_object(req.body);
-  api::reject_unknown_fields(body, {"name", "path"});
-  const std::string name = api::json_string(body, "name", std::nullopt);
-  const std::string relative = api::json_string(body, "path", std::nullopt);
-  const auto path = resolve_in_data_dir(app.options, relative, "path");
-  return register_envmap_file(app, name, path, "path:" + relative);
+  const api::EnvMapLoadRequest r = api::parse_envmap_load_request(req.body);
+  const auto path = resolve_in_data_dir(app.options, r.path, "path");
+  return register_envmap_file(app, r.name, path, "path:" + r.path);
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Request& req) {
