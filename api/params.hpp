@@ -3,11 +3,11 @@
 // Every failure is an ApiError 400 naming the field and saying what was expected.
 #include <cstdint>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace lp::api {
 
@@ -22,10 +22,17 @@ bool query_bool(const Query& q, const std::string& name, bool fallback);
 std::string query_enum(const Query& q, const std::string& name, const std::string& fallback,
                        const std::vector<std::string>& allowed);
 
-// Parses a request body as a JSON object; 400 "invalid_json" if it is not one.
-Json parse_json_object(const std::string& body);
+// Deepest nesting of arrays and objects a JSON request body may have (the API needs a few levels). It is
+// enforced while parsing, so neither the parse nor any later walk over a value can exhaust the stack.
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses JSON text; 400 "invalid_json" if it is not JSON, 400 "json_too_deep" past kMaxJsonDepth levels.
+Json parse_json(std::string_view text);
+// As parse_json, and 400 "invalid_json" unless the value is an object.
+Json parse_json_object(std::string_view body);
 // Fails with 400 naming the first key of `body` not in `known` (catches typos like "cout").
-void reject_unknown_fields(const Json& body, const std::vector<std::string>& known, const std::string& prefix = "");
+void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,
+                           const std::string& prefix = "");
 
 int64_t json_int(const Json& body, const std::string& name, int64_t fallback, int64_t min, int64_t max,
                  const std::string& prefix = "");

@@ -1,11 +1,11 @@
 // Render jobs: POST /api/v1/renders queues a render; status, image (the current pass while running),
 // server-sent progress events, cancel / remove, and the list of jobs.
+#include <fmt/format.h>
+
 #include <atomic>
 #include <chrono>
 #include <memory>
 #include <variant>
-
-#include <fmt/format.h>
 
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
@@ -21,14 +21,14 @@ namespace {
 using namespace std::chrono_literals;
 
 api::RenderLimits render_limits(const Options& o) {
-  return {o.max_render_width, o.max_render_height,   o.max_render_spp,
-          o.max_render_depth, o.max_render_objects,  int(std::min<int64_t>(o.max_lights, 1 << 30)),
+  return {o.max_render_width,  o.max_render_height,  o.max_render_spp,
+          o.max_render_depth,  o.max_render_objects, int(std::min<int64_t>(o.max_lights, 1 << 30)),
           o.max_mesh_triangles};
 }
 
 std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   auto job = std::dynamic_pointer_cast<RenderJob>(app.renders.find(id));
-  if (!job) throw api::not_found("no render job '" + id + "'");
+  if (!job) throw api::not_found("no render job '" + api::excerpt(id) + "'");
   return job;
 }
 
@@ -43,7 +43,7 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
       mesh->path = resolve_in_data_dir(options, relative, field);
     } catch (const api::ApiError& e) {
       if (e.status() != 404) throw;
-      throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
+      throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
     }
   }
 }
@@ -51,15 +51,16 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   auto request = api::parse_render_request(api::parse_json_object(req.body), render_limits(app.options));
   const auto envmap = app.envmaps.find(request.envmap);
-  if (!envmap) throw api::invalid_field("envmap", "no environment map '" + request.envmap + "' is loaded");
+  if (!envmap)
+    throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   resolve_meshes(request.scene, app.options);
   auto job = std::make_shared<RenderJob>(app.renders.new_id(), std::move(request), envmap->map);
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
   if (!app.renders.submit(job)) {
     res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
     send_error(res, 503, "queue_full",
-               fmt::format("{} renders are running and {} queued (the limit); retry later", app.renders.running_count(),
-                           app.renders.queued_count()));
+               fmt::format("{} renders are running and {} queued (the limit); retry later",
+                           app.renders.running_count(), app.renders.queued_count()));
     return;
   }
   res.set_header("Location", "/api/v1/renders/" + job->id());
@@ -81,8 +82,9 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   const auto params = api::parse_preview_params(req.params);
   const RenderImage current = job->image();
   if (!current.image)
-    throw api::ApiError(409, "no_image_yet",
-                        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
+    throw api::ApiError(
+        409, "no_image_yet",
+        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
   const auto bytes = write_image(*current.image, params.format, params.tone);
   res.set_header("Cache-Control", "no-store");
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
@@ -92,9 +94,13 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
   switch (app.renders.cancel_or_remove(job->id())) {
-    case JobManager::CancelOutcome::NotFound: throw api::not_found("no render job '" + job->id() + "'");
-    case JobManager::CancelOutcome::Removed: res.status = 204; return;
-    default: send_json(res, job->status_json(), 202);
+    case JobManager::CancelOutcome::NotFound:
+      throw api::not_found("no render job '" + job->id() + "'");
+    case JobManager::CancelOutcome::Removed:
+      res.status = 204;
+      return;
+    default:
+      send_json(res, job->status_json(), 202);
   }
 }
 
@@ -126,7 +132,9 @@ struct EventStream {
   bool first = true;
 };
 
-bool write_text(httplib::DataSink& sink, const std::string& text) { return sink.write(text.data(), text.size()); }
+bool write_text(httplib::DataSink& sink, const std::string& text) {
+  return sink.write(text.data(), text.size());
+}
 
 // Called by httplib again and again until it returns false or calls sink.done(). Each call waits up to
 // 250 ms for the job to end, then sends a progress event if the status changed (or a comment every 2 s
@@ -143,8 +151,10 @@ bool next_event(EventStream& s, httplib::DataSink& sink) {
   }
   const auto now = std::chrono::steady_clock::now();
   std::string text;
-  if (data != s.last_data) text = "event: progress\ndata: " + data + "\n\n";
-  else if (now - s.last_write > 2s) text = ": waiting\n\n";
+  if (data != s.last_data)
+    text = "event: progress\ndata: " + data + "\n\n";
+  else if (now - s.last_write > 2s)
+    text = ": waiting\n\n";
   if (text.empty()) return true;
   s.last_data = data;
   s.last_write = now;
@@ -164,25 +174,28 @@ void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, co
     return;
   }
   res.set_header("Cache-Control", "no-store");
-  res.set_chunked_content_provider("text/event-stream",
-                                   [state](size_t, httplib::DataSink& sink) { return next_event(*state, sink); });
+  res.set_chunked_content_provider(
+      "text/event-stream", [state](size_t, httplib::DataSink& sink) { return next_event(*state, sink); });
 }
 
 }  // namespace
 
 void register_render_routes(Router& router, App& app) {
   auto streams = std::make_shared<std::atomic<int>>(0);
-  router.post("/api/v1/renders", [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
+  router.post("/api/v1/renders",
+              [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
   router.get("/api/v1/renders", [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
   router.get("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, find_render(app, path_param(req, 1))->status_json());
   });
   router.get("/api/v1/renders/{id}/image",
              [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
-  router.get("/api/v1/renders/{id}/events", [&app, streams](const httplib::Request& req, httplib::Response& res) {
-    events(app, streams, req, res);
-  });
-  router.del("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
+  router.get("/api/v1/renders/{id}/events",
+             [&app, streams](const httplib::Request& req, httplib::Response& res) {
+               events(app, streams, req, res);
+             });
+  router.del("/api/v1/renders/{id}",
+             [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
 }
 
 }  // namespace lp::server

@@ -1,0 +1,29 @@
+#include "api/excerpt.hpp"
+
+#include <fmt/format.h>
+
+namespace lp::api {
+namespace {
+
+bool continues_character(char c) {
+  return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
+}
+
+}  // namespace
+
+std::string excerpt(std::string_view text) {
+  if (text.size() <= kExcerptBytes) return std::string(text);
+  size_t end = kExcerptBytes;
+  while (end > 0 && continues_character(text[end])) --end;
+  return std::string(text.substr(0, end)) + "...";
+}
+
+std::string describe(const nlohmann::json& value) {
+  const size_t n = value.size();
+  if (value.is_array()) return fmt::format("an array of {} item{}", n, n == 1 ? "" : "s");
+  if (value.is_object()) return fmt::format("an object of {} member{}", n, n == 1 ? "" : "s");
+  if (value.is_string()) return '"' + excerpt(value.get_ref<const std::string&>()) + '"';
+  return excerpt(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
+}  // namespace lp::api
