@@ -111,7 +111,7 @@ void RenderJob::checkpoint() {
   std::string previous;
   try {
     const auto fingerprint = envmap_fingerprint(*envmap_);
-    store_->write_bytes(store_->renders_dir() / file, write_exr(*current.image));
+    store_->write_bytes(store_->renders_dir() / file, write_exr(*current.image, ExrCompression::None));
     std::lock_guard lock(mutex_);
     previous = std::exchange(image_file_, file);
     envmap_fingerprint_ = fingerprint;

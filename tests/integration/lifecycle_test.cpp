@@ -269,6 +269,43 @@ TEST(Lifecycle, AfterKillAndRestartMapsAndRendersAreBackAndTheInterruptedOneResu
   EXPECT_LT(max_relative_difference(resumed, reference), 1e-5);
 }
 
+// A client that asks for a large body and never reads it: the server's writer blocks on a full socket.
+class SlowReader {
+ public:
+  SlowReader(int port, const std::string& path) : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
+    const int small = 4096;
+    setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    addr.sin_port = htons(uint16_t(port));
+    if (connect(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0)
+      throw std::runtime_error("connect failed");
+    const std::string request = "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+    if (send(fd_, request.data(), request.size(), 0) != ssize_t(request.size()))
+      throw std::runtime_error("send failed");
+  }
+  ~SlowReader() { close(fd_); }
+
+ private:
+  int fd_;
+};
+
+TEST(Lifecycle, SigtermWithASlowReaderAndARenderExitsWithinTheGraceBound) {
+  constexpr int kGraceS = 1;
+  test::ServerProcess server({"--shutdown-grace-s", std::to_string(kGraceS)});
+  const Api api(server);
+  const std::string id = api.submit(render_body("default", 256, 65536, 9));
+  api.wait_for(id, [](const json& st) { return st["status"] == "running"; });
+  SlowReader reader(server.port(), "/api/v1/envmaps/default/image?format=pfm");  // 6 MB it never reads
+  std::this_thread::sleep_for(200ms);  // lets the server start writing the body (not a timing assertion)
+  const auto stop = std::chrono::steady_clock::now();
+  server.send_signal(SIGTERM);
+  const auto exit_status = server.wait_exit(60s);
+  EXPECT_EQ(exit_status, 0);
+  EXPECT_LT(std::chrono::steady_clock::now() - stop, std::chrono::seconds(kGraceS + 4));
+}
+
 TEST(Lifecycle, CorruptStateFilesAreSkippedWithAWarning) {
   test::TempDir state;
   fs::create_directories(state.path() / "maps");
