@@ -126,7 +126,7 @@ bool Job::end_if_queued(JobStatus status) {
     if (status_ != JobStatus::Queued) return false;
     status_ = status;
   }
-  ended();
+  ending(status, std::nullopt);
   finished_cv_.notify_all();
   return true;
 }
@@ -152,13 +152,13 @@ bool Job::start() {
 }
 
 void Job::finish(JobStatus status, std::optional<JobError> error) {
+  ending(status, error);
   {
     std::lock_guard lock(mutex_);
     status_ = status;
     error_ = std::move(error);
     ended_ = std::chrono::steady_clock::now();
   }
-  ended();
   finished_cv_.notify_all();
 }
 

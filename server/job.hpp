@@ -56,8 +56,8 @@ class Job {
   void restore_ended(JobStatus status, std::optional<JobError> error);
 
  protected:
-  // Called once the job has its final status (from the thread that set it).
-  virtual void ended() {}
+  // Called once with the job's final status, just before others can see it (from the thread that sets it).
+  virtual void ending(JobStatus, const std::optional<JobError>&) {}
   // Called when the manager drops the job (removed by a client, or beyond the finished-job limits).
   virtual void forgotten() {}
   // A shutdown asked the job to stop at its next safe point (a pass boundary) and become interrupted.

@@ -58,12 +58,16 @@ int64_t RenderJob::retained_bytes() const {
 }
 
 RenderRecord RenderJob::record() const {
+  return record(status(), error());
+}
+
+RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& error) const {
   RenderRecord r;
   r.id = id();
   r.created = created();
   r.request = request_json_;
-  r.status = status();
-  r.error = error();
+  r.status = status;
+  r.error = error;
   r.elapsed_s = elapsed_s();
   std::lock_guard lock(mutex_);
   r.spp_done = spp_done_;
@@ -74,12 +78,12 @@ RenderRecord RenderJob::record() const {
   return r;
 }
 
-void RenderJob::save_record() const {
+void RenderJob::save_record(JobStatus status, const std::optional<JobError>& error) const {
   if (!store_) return;
   std::lock_guard lock(store_mutex_);
   if (deleted_) return;
   try {
-    store_->write_record(store_->renders_dir() / (id() + ".json"), record_json(record()));
+    store_->write_record(store_->renders_dir() / (id() + ".json"), record_json(record(status, error)));
   } catch (const std::exception& e) {
     spdlog::error("render {}: cannot save its record: {}", id(), e.what());
   }

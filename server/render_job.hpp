@@ -38,15 +38,17 @@ class RenderJob : public Job {
   int spp_done() const;
   const api::RenderRequest& request() const { return request_; }
   RenderRecord record() const;
+  RenderRecord record(JobStatus status, const std::optional<JobError>& error) const;
   int64_t retained_bytes() const override;
 
-  void save_record() const;   // writes the record to the store (a failure is logged)
+  void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
+  void save_record(JobStatus status, const std::optional<JobError>& error) const;
   void delete_state() const;  // removes the record and the image from the store, for good
 
  protected:
   bool run() override;
   void describe(nlohmann::json& out) const override;
-  void ended() override { save_record(); }
+  void ending(JobStatus status, const std::optional<JobError>& error) override { save_record(status, error); }
   void forgotten() override { delete_state(); }
 
  private:

@@ -254,7 +254,8 @@ TEST(Lifecycle, AfterKillAndRestartMapsAndRendersAreBackAndTheInterruptedOneResu
 
   const json interrupted = api.render(interrupted_id);
   EXPECT_EQ(interrupted["status"], "interrupted");
-  EXPECT_GE(interrupted["spp_done"].get<int>(), spp_at_kill);  // the last pass written before the kill
+  // The pass finished just before the kill may not have been written yet; the one before it was.
+  EXPECT_GE(interrupted["spp_done"].get<int>(), spp_at_kill / 2);
   EXPECT_LT(interrupted["spp_done"].get<int>(), 2048);
   const Reply resume = api.post("/api/v1/renders/" + interrupted_id + "/resume", "", "application/json");
   ASSERT_EQ(resume.status, 202) << resume.body;
