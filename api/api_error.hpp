@@ -20,8 +20,8 @@ class ApiError : public std::runtime_error {
   std::string code_;
 };
 
-// 400 naming the offending field: "invalid_field", "field 'count': must be ...". A field name can be a
-// client's key or parameter name, so it is quoted as an excerpt.
+// 400 naming the offending field: "invalid_field", "field 'count': must be ...". Field names may come
+// from the client (unknown keys), so they are excerpted too.
 inline ApiError invalid_field(const std::string& field, const std::string& problem) {
   return ApiError(400, "invalid_field", "field '" + excerpt(field) + "': " + problem);
 }

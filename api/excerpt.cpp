@@ -3,26 +3,19 @@
 #include <fmt/format.h>
 
 namespace lp::api {
-namespace {
-
-bool continues_character(char c) {
-  return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
-}
-
-}  // namespace
 
 std::string excerpt(std::string_view text) {
   if (text.size() <= kExcerptBytes) return std::string(text);
   size_t end = kExcerptBytes;
-  while (end > 0 && continues_character(text[end])) --end;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
   return std::string(text.substr(0, end)) + "...";
 }
 
 std::string describe(const nlohmann::json& value) {
   const size_t n = value.size();
   if (value.is_array()) return fmt::format("an array of {} item{}", n, n == 1 ? "" : "s");
-  if (value.is_object()) return fmt::format("an object of {} member{}", n, n == 1 ? "" : "s");
-  if (value.is_string()) return '"' + excerpt(value.get_ref<const std::string&>()) + '"';
+  if (value.is_object()) return fmt::format("an object with {} member{}", n, n == 1 ? "" : "s");
+  if (value.is_string()) return fmt::format("\"{}\"", excerpt(value.get_ref<const std::string&>()));
   return excerpt(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 

@@ -27,7 +27,8 @@ std::string query_enum(const Query& q, const std::string& name, const std::strin
 inline constexpr int kMaxJsonDepth = 64;
 
 // Parses JSON text; 400 "invalid_json" if it is not JSON, 400 "json_too_deep" past kMaxJsonDepth levels.
-Json parse_json(std::string_view text);
+// `what` names the text in those messages.
+Json parse_json(std::string_view text, std::string_view what = "the request body");
 // As parse_json, and 400 "invalid_json" unless the value is an object.
 Json parse_json_object(std::string_view body);
 // Fails with 400 naming the first key of `body` not in `known` (catches typos like "cout").

@@ -1,30 +1,24 @@
 // Render jobs: POST /api/v1/renders queues a render; status, image (the current pass while running),
-// server-sent progress events, cancel / remove, and the list of jobs.
+// server-sent progress events, cancel / remove, resume (an interrupted render), and the list of jobs.
 #include <fmt/format.h>
 
 #include <atomic>
 #include <chrono>
 #include <memory>
-#include <variant>
 
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
 #include "engine/image/image_io.hpp"
-#include "server/data_dir.hpp"
 #include "server/render_job.hpp"
+#include "server/render_requests.hpp"
 #include "server/routes.hpp"
+#include "server/stored_renders.hpp"
 
 namespace lp::server {
 namespace {
 
 using namespace std::chrono_literals;
-
-api::RenderLimits render_limits(const Options& o) {
-  return {o.max_render_width,  o.max_render_height,  o.max_render_spp,
-          o.max_render_depth,  o.max_render_objects, int(std::min<int64_t>(o.max_lights, 1 << 30)),
-          o.max_mesh_triangles};
-}
 
 std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   auto job = std::dynamic_pointer_cast<RenderJob>(app.renders.find(id));
@@ -32,39 +26,43 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-// Mesh paths are relative to --data-dir and must stay inside it. Every problem is a 400 naming the field.
-void resolve_meshes(render::SceneDesc& scene, const Options& options) {
-  for (size_t i = 0; i < scene.objects.size(); ++i) {
-    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
-    if (!mesh) continue;
-    const std::string field = fmt::format("scene.objects[{}].path", i);
-    const std::string relative = mesh->path.string();
-    try {
-      mesh->path = resolve_in_data_dir(options, relative, field);
-    } catch (const api::ApiError& e) {
-      if (e.status() != 404) throw;
-      throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
-    }
-  }
+void send_queue_full(const App& app, httplib::Response& res) {
+  res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
+  send_error(res, 503, "queue_full",
+             fmt::format("{} renders are running and {} queued (the limit); retry later",
+                         app.renders.running_count(), app.renders.queued_count()));
+}
+
+void send_accepted(const RenderJob& job, const nlohmann::json& body, httplib::Response& res) {
+  res.set_header("Location", "/api/v1/renders/" + job.id());
+  send_json(res, body, 202);
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
-  auto request = api::parse_render_request(api::parse_json_object(req.body), render_limits(app.options));
+  RenderRecord record;
+  record.id = app.renders.new_id();
+  record.request = api::parse_json_object(req.body);
+  auto request = api::parse_render_request(record.request, render_limits(app.options));
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   resolve_meshes(request.scene, app.options);
-  auto job = std::make_shared<RenderJob>(app.renders.new_id(), std::move(request), envmap->map);
+  auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
+                                         app.state.get());
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
+  job->save_record();
   if (!app.renders.submit(job)) {
-    res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
-    send_error(res, 503, "queue_full",
-               fmt::format("{} renders are running and {} queued (the limit); retry later",
-                           app.renders.running_count(), app.renders.queued_count()));
+    job->delete_state();
+    send_queue_full(app, res);
     return;
   }
-  res.set_header("Location", "/api/v1/renders/" + job->id());
-  send_json(res, body, 202);
+  send_accepted(*job, body, res);
+}
+
+void resume(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = resume_render(app, find_render(app, path_param(req, 1)));
+  if (!job) return send_queue_full(app, res);
+  send_accepted(*job, job->status_json(), res);
 }
 
 void list(const App& app, httplib::Response& res) {
@@ -107,10 +105,10 @@ void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
 // One slot of the bounded number of event streams; released when the response (and its provider) goes.
 class StreamSlot {
  public:
-  StreamSlot(std::shared_ptr<std::atomic<int>> count, int max) : count_(std::move(count)) {
+  StreamSlot(std::atomic<int>& count, int max) : count_(&count) {
     if (count_->fetch_add(1) >= max) {
       count_->fetch_sub(1);
-      count_.reset();
+      count_ = nullptr;
     }
   }
   ~StreamSlot() {
@@ -121,7 +119,7 @@ class StreamSlot {
   bool acquired() const { return count_ != nullptr; }
 
  private:
-  std::shared_ptr<std::atomic<int>> count_;
+  std::atomic<int>* count_;
 };
 
 struct EventStream {
@@ -161,11 +159,10 @@ bool next_event(EventStream& s, httplib::DataSink& sink) {
   return write_text(sink, text);
 }
 
-void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, const httplib::Request& req,
-            httplib::Response& res) {
+void events(App& app, const httplib::Request& req, httplib::Response& res) {
   auto state = std::make_shared<EventStream>();
   state->job = find_render(app, path_param(req, 1));
-  state->slot = std::make_unique<StreamSlot>(streams, app.options.max_event_streams);
+  state->slot = std::make_unique<StreamSlot>(app.event_streams, app.options.max_event_streams);
   if (!state->slot->acquired()) {
     res.set_header("Retry-After", "5");
     send_error(res, 503, "too_many_streams",
@@ -181,7 +178,6 @@ void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, co
 }  // namespace
 
 void register_render_routes(Router& router, App& app) {
-  auto streams = std::make_shared<std::atomic<int>>(0);
   router.post("/api/v1/renders",
               [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
   router.get("/api/v1/renders", [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
@@ -191,9 +187,9 @@ void register_render_routes(Router& router, App& app) {
   router.get("/api/v1/renders/{id}/image",
              [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
   router.get("/api/v1/renders/{id}/events",
-             [&app, streams](const httplib::Request& req, httplib::Response& res) {
-               events(app, streams, req, res);
-             });
+             [&app](const httplib::Request& req, httplib::Response& res) { events(app, req, res); });
+  router.post("/api/v1/renders/{id}/resume",
+              [&app](const httplib::Request& req, httplib::Response& res) { resume(app, req, res); });
   router.del("/api/v1/renders/{id}",
              [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
 }

@@ -42,8 +42,8 @@ TEST(Describe, ScalarsAsJsonContainersBySize) {
             "\"" + std::string(kExcerptBytes, 'y') + "...\"");
   EXPECT_EQ(describe(nlohmann::json::array({1, 2, 3})), "an array of 3 items");
   EXPECT_EQ(describe(nlohmann::json::array({nlohmann::json::array()})), "an array of 1 item");
-  EXPECT_EQ(describe(nlohmann::json::object({{"a", 1}, {"b", 2}})), "an object of 2 members");
-  EXPECT_EQ(describe(nlohmann::json::object({{"a", 1}})), "an object of 1 member");
+  EXPECT_EQ(describe(nlohmann::json::object({{"a", 1}, {"b", 2}})), "an object with 2 members");
+  EXPECT_EQ(describe(nlohmann::json::object({{"a", 1}})), "an object with 1 member");
 }
 
 }  // namespace

@@ -1,0 +1,34 @@
+#include "server/render_requests.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <variant>
+
+#include "api/api_error.hpp"
+#include "server/data_dir.hpp"
+
+namespace lp::server {
+
+api::RenderLimits render_limits(const Options& o) {
+  return {o.max_render_width,  o.max_render_height,  o.max_render_spp,
+          o.max_render_depth,  o.max_render_objects, int(std::min<int64_t>(o.max_lights, 1 << 30)),
+          o.max_mesh_triangles};
+}
+
+void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
+    if (!mesh) continue;
+    const std::string field = fmt::format("scene.objects[{}].path", i);
+    const std::string relative = mesh->path.string();
+    try {
+      mesh->path = resolve_in_data_dir(options, relative, field);
+    } catch (const api::ApiError& e) {
+      if (e.status() != 404) throw;
+      throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
+    }
+  }
+}
+
+}  // namespace lp::server
