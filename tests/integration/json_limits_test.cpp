@@ -1,8 +1,10 @@
 // Every JSON endpoint of the real server refuses a body nested deeper than kMaxJsonDepth with a 400 that
 // names the limit, and keeps serving (a 100,000-level value once overflowed the stack and killed the
-// server); error messages quote client values only as short excerpts.
+// server); so are state records at start. Error messages quote client values only as short excerpts.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "api/excerpt.hpp"
@@ -87,6 +89,19 @@ TEST(JsonLimits, MessagesQuoteOnlyAnExcerptOfClientValues) {
   EXPECT_EQ(message(id), "no environment map with id '" + quoted + "'");
   const Reply query = get("/api/v1/fresnel?eta_i=1&eta_t=" + huge.substr(0, 4000));
   EXPECT_EQ(message(query), "field 'eta_t': '" + quoted + "' is not a finite number");
+}
+
+TEST(JsonLimits, AStateRecordNestedTooDeepIsSkippedAndTheServerStarts) {
+  test::TempDir state;
+  std::filesystem::create_directories(state.path() / "renders");
+  std::ofstream(state.path() / "renders" / "0123456789abcdef.json")
+      << R"({"version":1,"id":"0123456789abcdef","request":)" << arrays(100'000) << "}";
+  test::ServerProcess restarted({"--state-dir", state.path().string()});
+  EXPECT_EQ(test::reply(restarted.client()->Get("/api/v1/health")).status, 200);
+  EXPECT_EQ(test::reply(restarted.client()->Get("/api/v1/renders")).body_json()["renders"].size(), 0u);
+  const std::string skipped = "the record nests arrays and objects deeper than the limit of " +
+                              std::to_string(api::kMaxJsonDepth) + " levels";
+  EXPECT_NE(restarted.log().find(skipped), std::string::npos) << restarted.log();
 }
 
 TEST(JsonLimits, TheApiDocumentStatesTheLimits) {
