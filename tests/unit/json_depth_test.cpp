@@ -81,6 +81,10 @@ TEST(JsonDepth, MessagesAboutHugeValuesStayShort) {
   EXPECT_EQ(sample_rejection(R"({"count":1,"strategy":")" + huge + R"("})"),
             "field 'strategy': '" + huge.substr(0, kExcerptBytes) +
                 "...' is not one of: independent, stratified, sobol");
+  // Found by tests/fuzz/sample_request on the parser that quoted the whole value (corpus:
+  // long_seed_echoed.json).
+  EXPECT_EQ(sample_rejection(R"({"count":4,"seed":")" + huge + R"("})"),
+            "field 'seed': must be an integer, got \"" + huge.substr(0, kExcerptBytes) + "...\"");
   const std::string unknown = sample_rejection(R"({")" + huge + R"(":1})");
   EXPECT_EQ(unknown.find("field '" + huge.substr(0, kExcerptBytes) + "...': unknown field"), 0u);
   EXPECT_LT(unknown.size(), 200u);
