@@ -12,8 +12,9 @@ std::string excerpt(std::string_view text) {
 }
 
 std::string describe(const nlohmann::json& value) {
-  if (value.is_array()) return fmt::format("an array of {} items", value.size());
-  if (value.is_object()) return fmt::format("an object with {} members", value.size());
+  const size_t n = value.size();
+  if (value.is_array()) return fmt::format("an array of {} item{}", n, n == 1 ? "" : "s");
+  if (value.is_object()) return fmt::format("an object with {} member{}", n, n == 1 ? "" : "s");
   if (value.is_string()) return fmt::format("\"{}\"", excerpt(value.get_ref<const std::string&>()));
   return excerpt(value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "api/api_error.hpp"
+#include "api/excerpt.hpp"
 
 namespace lp::api {
 namespace {
@@ -93,18 +94,25 @@ std::string query_enum(const Query& q, const std::string& name, const std::strin
   throw invalid_field(name, fmt::format("'{}' is not one of: {}", excerpt(*text), join(allowed, ", ")));
 }
 
-Json parse_json_object(const std::string& body) {
-  const Json::parser_callback_t bound_depth = [](int depth, Json::parse_event_t event, Json&) {
+Json parse_json(std::string_view text, std::string_view what) {
+  // Called as each array or object opens, before its contents are read: a too-deep document is
+  // refused after at most kMaxJsonDepth levels were built.
+  const auto bound_depth = [what](int depth, Json::parse_event_t event, Json&) {
     const bool opens =
         event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
     if (opens && depth >= kMaxJsonDepth)
       throw ApiError(
           400, "json_too_deep",
-          fmt::format("the request body nests arrays and objects deeper than {} levels", kMaxJsonDepth));
+          fmt::format("{} nests arrays and objects deeper than the limit of {} levels", what, kMaxJsonDepth));
     return true;
   };
-  Json j = Json::parse(body, bound_depth, false);
-  if (j.is_discarded()) throw ApiError(400, "invalid_json", "the request body is not valid JSON");
+  Json j = Json::parse(text, bound_depth, false);
+  if (j.is_discarded()) throw ApiError(400, "invalid_json", fmt::format("{} is not valid JSON", what));
+  return j;
+}
+
+Json parse_json_object(std::string_view body) {
+  Json j = parse_json(body);
   if (!j.is_object()) throw ApiError(400, "invalid_json", "the request body must be a JSON object");
   return j;
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lp::api {
@@ -21,13 +22,15 @@ bool query_bool(const Query& q, const std::string& name, bool fallback);
 std::string query_enum(const Query& q, const std::string& name, const std::string& fallback,
                        const std::vector<std::string>& allowed);
 
-// Deepest nesting of arrays and objects a request body may have (the API needs far fewer levels):
-// bounded while parsing, so no later recursion over the value can exhaust the stack.
+// Deepest nesting of arrays and objects a JSON request body may have (the API needs a few levels). It is
+// enforced while parsing, so neither the parse nor any later walk over a value can exhaust the stack.
 inline constexpr int kMaxJsonDepth = 64;
 
-// Parses a request body as a JSON object; 400 "invalid_json" if it is not one, 400 "json_too_deep"
-// when it nests deeper than kMaxJsonDepth.
-Json parse_json_object(const std::string& body);
+// Parses JSON text; 400 "invalid_json" if it is not JSON, 400 "json_too_deep" past kMaxJsonDepth levels.
+// `what` names the text in those messages.
+Json parse_json(std::string_view text, std::string_view what = "the request body");
+// As parse_json, and 400 "invalid_json" unless the value is an object.
+Json parse_json_object(std::string_view body);
 // Fails with 400 naming the first key of `body` not in `known` (catches typos like "cout").
 void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,
                            const std::string& prefix = "");

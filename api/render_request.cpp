@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "api/api_error.hpp"
+#include "api/excerpt.hpp"
 #include "engine/fresnel/metals.hpp"
 
 namespace lp::api {

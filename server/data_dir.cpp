@@ -20,7 +20,8 @@ void check_data_dir(const Options& options) {
 }
 
 fs::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field) {
-  if (!options.data_dir) throw api::invalid_field(field, "the server was started without --data-dir; paths are not accepted");
+  if (!options.data_dir)
+    throw api::invalid_field(field, "the server was started without --data-dir; paths are not accepted");
   if (relative.empty()) throw api::invalid_field(field, "must not be empty");
   if (relative.find('\0') != std::string::npos) throw api::invalid_field(field, "must not contain NUL");
   const fs::path rel(relative);
@@ -35,7 +36,8 @@ fs::path resolve_in_data_dir(const Options& options, const std::string& relative
   if (ec) throw api::invalid_field(field, "cannot be resolved");
   const auto [root_end, full_it] = std::mismatch(root.begin(), root.end(), full.begin(), full.end());
   if (root_end != root.end()) throw api::invalid_field(field, "resolves outside the data directory");
-  if (!fs::is_regular_file(full, ec)) throw api::not_found("no file '" + relative + "' in the data directory");
+  if (!fs::is_regular_file(full, ec))
+    throw api::not_found("no file '" + api::excerpt(relative) + "' in the data directory");
   return full;
 }
 

@@ -12,14 +12,17 @@ bool valid_envmap_name(const std::string& name) {
 }
 
 std::shared_ptr<const EnvMapEntry> EnvMapRegistry::add(const std::string& name, std::string format,
-                                                       std::string source, std::shared_ptr<const EnvMap> map) {
-  auto entry = std::make_shared<EnvMapEntry>(
-      EnvMapEntry{name, name, std::move(format), std::move(source), std::move(map), std::chrono::system_clock::now()});
+                                                       std::string source,
+                                                       std::shared_ptr<const EnvMap> map) {
+  auto entry = std::make_shared<EnvMapEntry>(EnvMapEntry{name, name, std::move(format), std::move(source),
+                                                         std::move(map), std::chrono::system_clock::now()});
   std::lock_guard lock(mutex_);
-  if (entries_.count(name)) throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
+  if (entries_.count(name))
+    throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
   if (int64_t(entries_.size()) >= max_entries_)
     throw api::ApiError(507, "insufficient_storage",
-                        "the server holds the maximum number of maps (" + std::to_string(max_entries_) + "); delete one first");
+                        "the server holds the maximum number of maps (" + std::to_string(max_entries_) +
+                            "); delete one first");
   entries_.emplace(name, entry);
   return entry;
 }
@@ -32,7 +35,7 @@ std::shared_ptr<const EnvMapEntry> EnvMapRegistry::find(const std::string& id) c
 
 std::shared_ptr<const EnvMapEntry> EnvMapRegistry::get(const std::string& id) const {
   auto entry = find(id);
-  if (!entry) throw api::not_found("no environment map with id '" + id + "'");
+  if (!entry) throw api::not_found("no environment map with id '" + api::excerpt(id) + "'");
   return entry;
 }
 

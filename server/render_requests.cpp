@@ -26,7 +26,7 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
       mesh->path = resolve_in_data_dir(options, relative, field);
     } catch (const api::ApiError& e) {
       if (e.status() != 404) throw;
-      throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
+      throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
     }
   }
 }

@@ -1,5 +1,6 @@
 // Environment maps: list, load (upload or data-dir path), metadata, delete, image, distribution.
 #include "api/api_error.hpp"
+#include "api/envmap_load_request.hpp"
 #include "api/envmap_schema.hpp"
 #include "api/preview_params.hpp"
 #include "server/data_dir.hpp"
@@ -20,18 +21,16 @@ bool is_json_body(const httplib::Request& req) {
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_json(App& app, const httplib::Request& req) {
-  const api::Json body = api::parse_json_object(req.body);
-  api::reject_unknown_fields(body, {"name", "path"});
-  const std::string name = api::json_string(body, "name", std::nullopt);
-  const std::string relative = api::json_string(body, "path", std::nullopt);
-  const auto path = resolve_in_data_dir(app.options, relative, "path");
-  return register_envmap_file(app, name, path, "path:" + relative);
+  const api::EnvMapLoadRequest r = api::parse_envmap_load_request(req.body);
+  const auto path = resolve_in_data_dir(app.options, r.path, "path");
+  return register_envmap_file(app, r.name, path, "path:" + r.path);
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Request& req) {
   const auto name = api::query_string(req.params, "name");
   if (!name) throw api::invalid_field("name", "is required (?name=NAME) when the body is an image");
-  if (req.body.empty()) throw api::ApiError(400, "empty_body", "the request body is empty: send an EXR, PFM or HDR file");
+  if (req.body.empty())
+    throw api::ApiError(400, "empty_body", "the request body is empty: send an EXR, PFM or HDR file");
   const auto* bytes = reinterpret_cast<const uint8_t*>(req.body.data());
   return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload");
 }
@@ -49,12 +48,14 @@ void image(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
   const auto preview = api::parse_preview_params(req.params);
   const auto bytes = write_image(entry->map->image(), preview.format, preview.tone);
-  res.set_content(reinterpret_cast<const char*>(bytes.data()), bytes.size(), format_mime_type(preview.format));
+  res.set_content(reinterpret_cast<const char*>(bytes.data()), bytes.size(),
+                  format_mime_type(preview.format));
 }
 
 void distribution(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
-  const auto mode = *parse_luminance_mode(api::query_enum(req.params, "luminance", "average", {"average", "rec709"}));
+  const auto mode =
+      *parse_luminance_mode(api::query_enum(req.params, "luminance", "average", {"average", "rec709"}));
   const bool sin_weight = api::query_bool(req.params, "sin_weight", true);
   send_json(res, api::distribution_json(*entry->map, mode, sin_weight));
 }
@@ -67,13 +68,14 @@ void register_envmap_routes(Router& router, App& app) {
     for (const auto& e : app.envmaps.list()) list.push_back(metadata(*e));
     send_json(res, {{"envmaps", list}});
   });
-  router.post("/api/v1/envmaps", [&app](const httplib::Request& req, httplib::Response& res) { create(app, req, res); });
+  router.post("/api/v1/envmaps",
+              [&app](const httplib::Request& req, httplib::Response& res) { create(app, req, res); });
   router.get("/api/v1/envmaps/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, metadata(*app.envmaps.get(path_param(req, 1))));
   });
   router.del("/api/v1/envmaps/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     const std::string id = path_param(req, 1);
-    if (!remove_map(app, id)) throw api::not_found("no environment map with id '" + id + "'");
+    if (!remove_map(app, id)) throw api::not_found("no environment map with id '" + api::excerpt(id) + "'");
     res.status = 204;
   });
   router.get("/api/v1/envmaps/{id}/image",

@@ -22,7 +22,7 @@ using namespace std::chrono_literals;
 
 std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   auto job = std::dynamic_pointer_cast<RenderJob>(app.renders.find(id));
-  if (!job) throw api::not_found("no render job '" + id + "'");
+  if (!job) throw api::not_found("no render job '" + api::excerpt(id) + "'");
   return job;
 }
 
@@ -44,7 +44,8 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   record.request = api::parse_json_object(req.body);
   auto request = api::parse_render_request(record.request, render_limits(app.options));
   const auto envmap = app.envmaps.find(request.envmap);
-  if (!envmap) throw api::invalid_field("envmap", "no environment map '" + request.envmap + "' is loaded");
+  if (!envmap)
+    throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   resolve_meshes(request.scene, app.options);
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
                                          app.state.get());

@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
+#include "api/params.hpp"
 #include "server/atomic_file.hpp"
 
 namespace lp::server {
@@ -60,12 +62,15 @@ std::vector<std::pair<fs::path, nlohmann::json>> StateStore::read_records(const 
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     if (entry.path().extension() != ".json") continue;
-    std::ifstream in(entry.path(), std::ios::binary);
-    auto record = nlohmann::json::parse(in, nullptr, false);
-    if (!in.bad() && record.is_object())
+    try {
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      auto record = api::parse_json(text, "the record");
+      if (in.bad() || !record.is_object()) throw std::runtime_error("not a JSON object");
       out.emplace_back(entry.path(), std::move(record));
-    else
-      spdlog::warn("state: skipping {}: not a readable JSON record", entry.path().string());
+    } catch (const std::exception& e) {
+      spdlog::warn("state: skipping {}: {}", entry.path().string(), e.what());
+    }
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return out;

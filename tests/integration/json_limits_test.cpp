@@ -1,10 +1,13 @@
-// Request bodies nested far deeper than kMaxJsonDepth get a 400 from every JSON endpoint of the real
-// server, which keeps answering (a 100,000-level value once overflowed the stack while being quoted in
-// an error message), and error messages quote client values only in short excerpts.
+// Every JSON endpoint of the real server refuses a body nested deeper than kMaxJsonDepth with a 400 that
+// names the limit, and keeps serving (a 100,000-level value once overflowed the stack and killed the
+// server); so are state records at start. Error messages quote client values only as short excerpts.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "api/excerpt.hpp"
 #include "api/params.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
@@ -14,10 +17,6 @@ namespace {
 
 using test::Reply;
 
-std::string nested_array(int depth) {
-  return std::string(size_t(depth), '[') + std::string(size_t(depth), ']');
-}
-
 test::ServerProcess& server() {
   static test::ServerProcess process;
   return process;
@@ -26,50 +25,90 @@ test::ServerProcess& server() {
 Reply post_json(const std::string& path, const std::string& body) {
   return test::reply(server().client()->Post(path.c_str(), body, "application/json"));
 }
+Reply get(const std::string& path) {
+  return test::reply(server().client()->Get(path.c_str()));
+}
+
+std::string arrays(int depth) {
+  return std::string(size_t(depth), '[') + std::string(size_t(depth), ']');
+}
 
 const char* const kJsonEndpoints[] = {"/api/v1/envmaps", "/api/v1/envmaps/default/samples",
                                       "/api/v1/envmaps/default/median-cut", "/api/v1/renders"};
 
-TEST(JsonLimits, HundredThousandLevelsGet400FromEveryJsonEndpoint) {
-  const std::string body = R"({"count": )" + nested_array(100'000) + "}";
+void expect_too_deep(const std::string& path, const std::string& body) {
+  const Reply r = post_json(path, body);
+  ASSERT_EQ(r.status, 400) << path << ": " << r.body.substr(0, 300);
+  EXPECT_EQ(r.body_json()["error"]["code"], "json_too_deep") << path;
+  EXPECT_NE(r.body.find("limit of " + std::to_string(api::kMaxJsonDepth) + " levels"), std::string::npos)
+      << r.body;
+  EXPECT_LT(r.body.size(), 200u) << path;
+}
+
+TEST(JsonLimits, HundredThousandLevelsGet400FromEveryJsonEndpointAndTheServerStaysUp) {
+  const std::string field = R"({"count":)" + arrays(100'000) + "}";  // about 200 KB
+  std::string objects;
+  for (int i = 0; i < 100'000; ++i) objects += R"({"a":)";
+  objects += '0';
+  objects.append(100'000, '}');
   for (const char* path : kJsonEndpoints) {
-    const Reply r = post_json(path, body);
-    EXPECT_EQ(r.status, 400) << path << ": " << r.body.substr(0, 200);
-    EXPECT_EQ(r.body_json()["error"]["code"], "json_too_deep") << path;
-    EXPECT_LT(r.body.size(), 300u) << path;
+    expect_too_deep(path, field);
+    expect_too_deep(path, objects);
+    expect_too_deep(path, arrays(100'000));
   }
-  EXPECT_TRUE(server().alive());
-  EXPECT_EQ(test::reply(server().client()->Get("/api/v1/health")).status, 200);
-  EXPECT_EQ(post_json("/api/v1/envmaps/default/samples", R"({"count": 4})").status, 200);
+  ASSERT_TRUE(server().alive());
+  EXPECT_EQ(get("/api/v1/health").status, 200);
+  EXPECT_EQ(post_json("/api/v1/envmaps/default/samples", R"({"count":4})").status, 200);
 }
 
-TEST(JsonLimits, DepthLimitIsExact) {
-  // The body object is level 1: a field holding kMaxJsonDepth - 1 nested arrays reaches the limit.
-  const std::string at_limit = R"({"count": )" + nested_array(api::kMaxJsonDepth - 1) + "}";
-  const Reply ok = post_json("/api/v1/envmaps/default/samples", at_limit);
-  EXPECT_EQ(ok.status, 400);
-  EXPECT_EQ(ok.body_json()["error"]["code"], "invalid_field") << ok.body;
-  const std::string over = R"({"count": )" + nested_array(api::kMaxJsonDepth) + "}";
-  EXPECT_EQ(post_json("/api/v1/envmaps/default/samples", over).body_json()["error"]["code"], "json_too_deep");
+TEST(JsonLimits, TheLimitItselfIsParsed) {
+  // The body object is the first level; its field adds kMaxJsonDepth - 1 more: parsed, then refused as a
+  // wrong type (not as too deep).
+  const Reply at_limit =
+      post_json("/api/v1/envmaps/default/samples", R"({"count":)" + arrays(api::kMaxJsonDepth - 1) + "}");
+  EXPECT_EQ(at_limit.status, 400);
+  EXPECT_EQ(at_limit.body_json()["error"]["message"],
+            "field 'count': must be an integer, got an array of 1 item");
+  expect_too_deep("/api/v1/envmaps/default/samples", R"({"count":)" + arrays(api::kMaxJsonDepth) + "}");
 }
 
-TEST(JsonLimits, MessagesQuoteOnlyAnExcerptOfLongValues) {
-  const std::string long_text(200'000, 'x');
-  const Reply typed = post_json("/api/v1/envmaps/default/samples", R"({"count": ")" + long_text + R"("})");
-  EXPECT_EQ(typed.status, 400);
-  EXPECT_LT(typed.body.size(), 300u) << typed.body.substr(0, 300);
-  const Reply key = post_json("/api/v1/envmaps/default/samples", R"({")" + long_text + R"(": 1})");
-  EXPECT_EQ(key.status, 400);
-  EXPECT_LT(key.body.size(), 600u) << key.body.substr(0, 300);
-  const Reply array =
-      post_json("/api/v1/envmaps/default/samples", R"({"count": [)" + std::string("1,") + "2]}");
-  EXPECT_NE(array.body.find("an array of 2 items"), std::string::npos) << array.body;
+TEST(JsonLimits, MessagesQuoteOnlyAnExcerptOfClientValues) {
+  const std::string huge(100'000, 'x');
+  const std::string quoted = huge.substr(0, api::kExcerptBytes) + "...";
+  const auto message = [](const Reply& r) { return r.body_json()["error"]["message"].get<std::string>(); };
+
+  const Reply value = post_json("/api/v1/envmaps/default/samples", R"({"count":")" + huge + R"("})");
+  EXPECT_EQ(message(value), "field 'count': must be an integer, got \"" + quoted + "\"");
+  const Reply key = post_json("/api/v1/envmaps/default/median-cut", R"({")" + huge + R"(":1})");
+  EXPECT_EQ(message(key).find("field '" + quoted + "': unknown field"), 0u) << message(key);
+  const Reply map = post_json("/api/v1/renders", R"({"envmap":")" + huge + R"("})");
+  EXPECT_EQ(map.status, 400);
+  EXPECT_EQ(message(map), "field 'envmap': no environment map '" + quoted + "' is loaded");
+  const Reply id = get("/api/v1/envmaps/" + huge.substr(0, 4000));
+  EXPECT_EQ(id.status, 404);
+  EXPECT_EQ(message(id), "no environment map with id '" + quoted + "'");
+  const Reply query = get("/api/v1/fresnel?eta_i=1&eta_t=" + huge.substr(0, 4000));
+  EXPECT_EQ(message(query), "field 'eta_t': '" + quoted + "' is not a finite number");
 }
 
-TEST(JsonLimits, TheDocumentStatesTheLimit) {
-  const Reply doc = test::reply(server().client()->Get("/api/v1/openapi.yaml"));
-  const std::string stated = "nest at most " + std::to_string(api::kMaxJsonDepth) + " levels";
-  EXPECT_NE(doc.body.find(stated), std::string::npos);
+TEST(JsonLimits, AStateRecordNestedTooDeepIsSkippedAndTheServerStarts) {
+  test::TempDir state;
+  std::filesystem::create_directories(state.path() / "renders");
+  std::ofstream(state.path() / "renders" / "0123456789abcdef.json")
+      << R"({"version":1,"id":"0123456789abcdef","request":)" << arrays(100'000) << "}";
+  test::ServerProcess restarted({"--state-dir", state.path().string()});
+  EXPECT_EQ(test::reply(restarted.client()->Get("/api/v1/health")).status, 200);
+  EXPECT_EQ(test::reply(restarted.client()->Get("/api/v1/renders")).body_json()["renders"].size(), 0u);
+  const std::string skipped = "the record nests arrays and objects deeper than the limit of " +
+                              std::to_string(api::kMaxJsonDepth) + " levels";
+  EXPECT_NE(restarted.log().find(skipped), std::string::npos) << restarted.log();
+}
+
+TEST(JsonLimits, TheApiDocumentStatesTheLimits) {
+  const std::string doc = get("/api/v1/openapi.yaml").body;
+  EXPECT_NE(doc.find("nest at most " + std::to_string(api::kMaxJsonDepth) + " levels"), std::string::npos);
+  EXPECT_NE(doc.find("at most the first " + std::to_string(api::kExcerptBytes) + " bytes"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,30 @@
+// The query parameters of the image endpoints: samples.png, median-cut.png, and the map and render images
+// (format, exposure, gamma). One query goes to every parser.
+// fuzz-dictionary: query.dict
+#include "api/median_cut_request.hpp"
+#include "api/preview_params.hpp"
+#include "api/sample_request.hpp"
+#include "fuzz_input.hpp"
+#include "server/options.hpp"
+
+namespace {
+
+template <typename Parse>
+void parse(const Parse& parse_query) {
+  try {
+    parse_query();
+  } catch (const lp::api::ApiError& e) {
+    lp::fuzz::check_rejection(e);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const lp::api::Query q = lp::fuzz::as_query(lp::fuzz::as_text(data, size));
+  const lp::server::Options defaults;
+  parse([&] { lp::api::parse_sample_image_query(q, defaults.max_samples); });
+  parse([&] { lp::api::parse_median_cut_image_query(q, defaults.max_lights); });
+  parse([&] { lp::api::parse_preview_params(q); });
+  return 0;
+}
