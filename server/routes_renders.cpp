@@ -10,7 +10,9 @@
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
+#include "engine/core/error.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/render/mesh_loader.hpp"
 #include "server/data_dir.hpp"
 #include "server/render_job.hpp"
 #include "server/routes.hpp"
@@ -32,8 +34,9 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-// Mesh paths are relative to --data-dir and must stay inside it. Every problem is a 400 naming the field.
-void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+// Mesh paths are relative to --data-dir and must stay inside it, and the files must pass the OBJ pre-scan.
+// Every problem is a 400 naming the field.
+void resolve_meshes(render::SceneDesc& scene, const Options& options, const render::MeshLimits& limits) {
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;
@@ -45,6 +48,11 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
       if (e.status() != 404) throw;
       throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
     }
+    try {
+      render::check_obj_file(mesh->path, limits);
+    } catch (const Error& e) {
+      throw api::invalid_field(field, e.what());
+    }
   }
 }
 
@@ -52,7 +60,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   auto request = api::parse_render_request(api::parse_json_object(req.body), render_limits(app.options));
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap) throw api::invalid_field("envmap", "no environment map '" + request.envmap + "' is loaded");
-  resolve_meshes(request.scene, app.options);
+  resolve_meshes(request.scene, app.options, request.settings.mesh_limits);
   auto job = std::make_shared<RenderJob>(app.renders.new_id(), std::move(request), envmap->map);
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
   if (!app.renders.submit(job)) {

@@ -71,6 +71,7 @@ std::array<const char*, 3> pick_channels(const Imf::ChannelList& channels) {
 Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   enable_exr_threads();
   try {
+    check_exr_capacity(bytes, limits);
     MemoryIStream stream(bytes);
     Imf::InputFile file(stream);
     const Imath::Box2i window = file.header().dataWindow();
@@ -78,7 +79,6 @@ Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
     const int64_t height = int64_t{window.max.y} - window.min.y + 1;
     check_image_size(width, height, limits);
     const auto names = pick_channels(file.header().channels());
-    check_exr_capacity(bytes);
 
     Image image(static_cast<int>(width), static_cast<int>(height));
     const bool grey = names[0] == names[1];

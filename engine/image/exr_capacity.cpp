@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/image/image_limits.hpp"
 
 namespace lp {
 namespace {
@@ -123,7 +124,7 @@ Totals tile_totals(exr_const_context_t ctx, const exr_attr_box2i_t& window, uint
 
 }  // namespace
 
-void check_exr_capacity(std::span<const uint8_t> bytes) {
+void check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   const Context ctx = open(bytes);
   exr_storage_t storage;
   exr_compression_t compression;
@@ -133,7 +134,12 @@ void check_exr_capacity(std::span<const uint8_t> bytes) {
   check_result(exr_get_data_window(ctx.get(), 0, &window), "data window");
   if (storage != EXR_STORAGE_SCANLINE && storage != EXR_STORAGE_TILED)
     throw Error(ErrorKind::Unsupported, "deep OpenEXR images are not supported");
-  if (window.max.x < window.min.x || window.max.y < window.min.y) cannot_hold("empty data window");
+  check_image_size(int64_t{window.max.x} - window.min.x + 1, int64_t{window.max.y} - window.min.y + 1,
+                   limits);
+  int32_t chunks = 0;
+  check_result(exr_get_chunk_count(ctx.get(), 0, &chunks), "chunk count");
+  if (chunks <= 0 || uint64_t(chunks) > bytes.size() / sizeof(uint64_t))
+    cannot_hold(fmt::format("an offset table of {} chunks", chunks));
   const Totals t = storage == EXR_STORAGE_SCANLINE ? scanline_totals(ctx.get(), window, bytes.size())
                                                    : tile_totals(ctx.get(), window, bytes.size());
   const uint64_t ratio = max_expansion(compression);

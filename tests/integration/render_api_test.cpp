@@ -22,6 +22,7 @@
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
+#include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
@@ -34,22 +35,15 @@ using namespace std::chrono_literals;
 // A data directory for the tests: meshes/bunny.obj (a copy) and escape.obj, a link to a file outside it.
 class TempDataDir {
  public:
-  TempDataDir() {
-    char tmpl[] = "/tmp/lightprobe-render-data-XXXXXX";
-    if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
-    path_ = tmpl;
-    fs::create_directories(path_ / "meshes");
-    fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path_ / "meshes" / "bunny.obj");
-    fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path_ / "escape.obj");
+  TempDataDir() : dir_("lightprobe-render-data") {
+    fs::create_directories(path() / "meshes");
+    fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path() / "meshes" / "bunny.obj");
+    fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path() / "escape.obj");
   }
-  ~TempDataDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
+  const fs::path& path() const { return dir_.path(); }
 
  private:
-  fs::path path_;
+  test::TempDir dir_;
 };
 
 const fs::path& data_dir() {
