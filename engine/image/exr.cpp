@@ -71,10 +71,13 @@ std::array<const char*, 3> pick_channels(const Imf::ChannelList& channels) {
 Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   enable_exr_threads();
   try {
-    check_exr_capacity(bytes, limits);
+    const ExrHeaderSummary checked = check_exr_capacity(bytes, limits);
     MemoryIStream stream(bytes);
     Imf::InputFile file(stream);
     const Imath::Box2i window = file.header().dataWindow();
+    if (window.min.x != checked.min_x || window.min.y != checked.min_y || window.max.x != checked.max_x ||
+        window.max.y != checked.max_y || int(file.header().compression()) != checked.compression)
+      throw Error(ErrorKind::Corrupt, "cannot read OpenEXR data: the header reads differently on a second pass");
     const int64_t width = int64_t{window.max.x} - window.min.x + 1;
     const int64_t height = int64_t{window.max.y} - window.min.y + 1;
     check_image_size(width, height, limits);

@@ -124,7 +124,7 @@ Totals tile_totals(exr_const_context_t ctx, const exr_attr_box2i_t& window, uint
 
 }  // namespace
 
-void check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits) {
+ExrHeaderSummary check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   const Context ctx = open(bytes);
   exr_storage_t storage;
   exr_compression_t compression;
@@ -145,6 +145,7 @@ void check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limit
   const uint64_t ratio = max_expansion(compression);
   if (t.packed == 0 || (ratio && t.unpacked / ratio > t.packed))
     cannot_hold(fmt::format("{} bytes of compressed pixels for {} bytes of pixels", t.packed, t.unpacked));
+  return {window.min.x, window.min.y, window.max.x, window.max.y, int(compression)};
 }
 
 }  // namespace lp

@@ -11,8 +11,15 @@
 
 namespace lp {
 
+// What the check read from the header, for the decoder to confirm it reads the same (two parsers of one
+// header must agree, or the check would not cover what is decoded).
+struct ExrHeaderSummary {
+  int min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // the data window
+  int compression = 0;                             // exr_compression_t / Imf::Compression
+};
+
 // Throws lp::Error: Corrupt when the file cannot hold the pixels of its data window, TooLarge over the
 // limits, Unsupported for deep images.
-void check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits);
+ExrHeaderSummary check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits);
 
 }  // namespace lp

@@ -118,6 +118,12 @@ TEST(DecoderBounds, ExrThatCannotHoldItsPixelsIsRefusedBeforeAllocation) {
   EXPECT_NE(message.find("cannot hold"), std::string::npos) << message;
 }
 
+TEST(DecoderBounds, ExrWithAHeaderTheTwoParsersReadDifferentlyIsCorrupt) {
+  // Found by fuzzing: the library's C++ header parser reads an attribute claiming 1.8 GB here.
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("exr", "opaque_attribute_claims_1_8_gb.exr"));
+  error_of(ErrorKind::Corrupt, [&] { read_image(bytes); });
+}
+
 TEST(DecoderBounds, ExrWithADataWindowFarFromTheOriginDecodes) {
   // Data window (1e9, -1e9) .. (1e9 + 7, -1e9 + 3), half RGB with the generator's pattern 0.01 * (i % 97).
   const Image img = read_image(test::read_bytes(test::fuzz_corpus_path("exr", "far_window.exr"))).image;
