@@ -462,13 +462,12 @@ TEST(RenderQueue, AFullQueueAnswers503WithRetryAfter) {
   EXPECT_EQ(list.body_json()["queued"], 1);
 }
 
-TEST(RenderQueue, AMeshOverTheTriangleLimitFailsTheJob) {
-  auto& s = small_server();
-  const std::string id = submit(s, render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
-  const json st = wait_finished(s, id);
-  EXPECT_EQ(st["status"], "failed");
-  EXPECT_EQ(st["error"]["code"], "too_large") << st.dump();
-  EXPECT_EQ(get(s, "/api/v1/renders/" + id + "/image").status, 409);
+TEST(RenderQueue, AMeshOverTheTriangleLimitIsRefusedAtSubmission) {
+  auto& s = small_server();  // --max-mesh-triangles 1000
+  const Reply r = post(s, "/api/v1/renders", render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
+  EXPECT_EQ(r.status, 400) << r.body;
+  EXPECT_NE(r.body.find("scene.objects[0].path"), std::string::npos) << r.body;
+  EXPECT_NE(r.body.find("has over 1000 triangles"), std::string::npos) << r.body;
 }
 
 TEST(RenderQueue, FinishedJobsAreBoundedAndTheOldestDropped) {
