@@ -34,6 +34,9 @@ int64_t span_size(exr_const_context_t, void* user) {
 
 void ignore_errors(exr_const_context_t, exr_result_t, const char*) {}
 
+// Tiles may extend past a small image, up to this size.
+constexpr int64_t kMaxTileOverhang = 256;
+
 // The attribute walk of the library's C++ header reader (Header::readFrom): a name and a type name of
 // at most 255 characters and a NUL each, then a 32-bit size and the value. That reader allocates the
 // size of an unknown attribute before reading it, so every size must fit in the rest of the file
@@ -169,6 +172,17 @@ Totals tile_totals(exr_const_context_t ctx, const exr_attr_box2i_t& window, uint
   if (tile_w <= 0 || tile_h <= 0) cannot_hold("empty tiles");
   const int64_t width = int64_t{window.max.x} - window.min.x + 1,
                 height = int64_t{window.max.y} - window.min.y + 1;
+  // The library reads tiles through a buffer of one row of tiles across the image: a tile far taller
+  // or wider than the image would make that buffer larger than the image.
+  // (exr_get_tile_sizes above gives the size clipped to the level; the buffer uses the declared one.)
+  uint32_t declared_w = 0, declared_h = 0;
+  exr_tile_level_mode_t levels;
+  exr_tile_round_mode_t rounding;
+  check_result(exr_get_tile_descriptor(ctx, 0, &declared_w, &declared_h, &levels, &rounding),
+               "tile description");
+  if (declared_w > std::max<int64_t>(width, kMaxTileOverhang) ||
+      declared_h > std::max<int64_t>(height, kMaxTileOverhang))
+    cannot_hold(fmt::format("tiles of {} x {} for {} x {} pixels", declared_w, declared_h, width, height));
   const int64_t columns = (width + tile_w - 1) / tile_w, rows = (height + tile_h - 1) / tile_h;
   Totals t;
   for (int64_t ty = 0; ty < rows; ++ty) {

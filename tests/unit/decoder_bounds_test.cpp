@@ -126,6 +126,14 @@ TEST(DecoderBounds, ExrAttributeLargerThanTheFileIsRefusedBeforeTheLibraryAlloca
   EXPECT_NE(message.find("an attribute of 1851877475 bytes"), std::string::npos) << message;
 }
 
+TEST(DecoderBounds, ExrTilesFarLargerThanTheImageAreRefused) {
+  // Found by fuzzing: a 16 x 8 image declaring 8 x 8388616 tiles; the library sized its tile-row
+  // buffer from the declared tile before finding the data did not match.
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("exr", "tile_taller_than_image.exr"));
+  const std::string message = error_of(ErrorKind::Corrupt, [&] { read_image(bytes); });
+  EXPECT_NE(message.find("tiles of 8 x 8388616 for 16 x 8 pixels"), std::string::npos) << message;
+}
+
 TEST(DecoderBounds, ExrWithADataWindowFarFromTheOriginDecodes) {
   // Data window (1e9, -1e9) .. (1e9 + 7, -1e9 + 3), half RGB with the generator's pattern 0.01 * (i % 97).
   const Image img = read_image(test::read_bytes(test::fuzz_corpus_path("exr", "far_window.exr"))).image;
