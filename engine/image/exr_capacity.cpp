@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -52,7 +53,10 @@ class AttributeWalk {
         (uint32_t(b_[4]) | uint32_t(b_[5]) << 8 | uint32_t(b_[6]) << 16 | uint32_t(b_[7]) << 24) & kMultiPart;
     pos_ = 8;
     do {
-      while (!name().empty()) {
+      std::set<std::string_view>
+          seen;  // a repeated attribute: the C++ reader keeps the last, the core the first
+      for (std::string_view attribute = name(); !attribute.empty(); attribute = name()) {
+        if (!seen.insert(attribute).second) bad(fmt::format("attribute '{}' appears twice", attribute));
         const std::string_view type = name();
         const uint64_t size = value_size();
         if (type == "preview" && size >= 8) preview(size);

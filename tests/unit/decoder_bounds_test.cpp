@@ -135,6 +135,14 @@ TEST(DecoderBounds, ExrTilesFarLargerThanTheImageAreRefused) {
   EXPECT_NE(message.find("tiles of 8 x 8388616 for 16 x 8 pixels"), std::string::npos) << message;
 }
 
+TEST(DecoderBounds, ExrAttributeGivenTwiceIsRefused) {
+  // Found by fuzzing: two dataWindow attributes. The core reader keeps one, the C++ reader the other
+  // (6029327 pixels wide), and sized its line buffers from it.
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("exr", "data_window_twice.exr"));
+  const std::string message = error_of(ErrorKind::Corrupt, [&] { read_image(bytes); });
+  EXPECT_NE(message.find("attribute 'dataWindow' appears twice"), std::string::npos) << message;
+}
+
 TEST(DecoderBounds, ExrWithADataWindowFarFromTheOriginDecodes) {
   // Data window (1e9, -1e9) .. (1e9 + 7, -1e9 + 3), half RGB with the generator's pattern 0.01 * (i % 97).
   const Image img = read_image(test::read_bytes(test::fuzz_corpus_path("exr", "far_window.exr"))).image;
