@@ -5,11 +5,10 @@
 
 #include <algorithm>
 #include <memory>
-#include <set>
 #include <string>
-#include <string_view>
 
 #include "engine/core/error.hpp"
+#include "engine/image/exr_attributes.hpp"
 #include "engine/image/image_limits.hpp"
 
 namespace lp {
@@ -37,67 +36,6 @@ void ignore_errors(exr_const_context_t, exr_result_t, const char*) {}
 
 // Tiles may extend past a small image, up to this size.
 constexpr int64_t kMaxTileOverhang = 256;
-
-// The attribute walk of the library's C++ header reader (Header::readFrom): a name and a type name of
-// at most 255 characters and a NUL each, then a 32-bit size and the value. That reader allocates the
-// size of an unknown attribute before reading it, so every size must fit in the rest of the file
-// (1.8 GB were claimed by a 300-byte file). A multi-part file holds headers until an empty one.
-class AttributeWalk {
- public:
-  explicit AttributeWalk(std::span<const uint8_t> b) : b_(b) {}
-
-  void run() {
-    constexpr uint32_t kMultiPart = 0x1000;
-    if (b_.size() < 8) bad("no version field");
-    const bool multi_part =
-        (uint32_t(b_[4]) | uint32_t(b_[5]) << 8 | uint32_t(b_[6]) << 16 | uint32_t(b_[7]) << 24) & kMultiPart;
-    pos_ = 8;
-    do {
-      std::set<std::string_view>
-          seen;  // a repeated attribute: the C++ reader keeps the last, the core the first
-      for (std::string_view attribute = name(); !attribute.empty(); attribute = name()) {
-        if (!seen.insert(attribute).second) bad(fmt::format("attribute '{}' appears twice", attribute));
-        const std::string_view type = name();
-        const uint64_t size = value_size();
-        if (type == "preview" && size >= 8) preview(size);
-        pos_ += size;
-      }
-    } while (multi_part && at(pos_) != 0);
-  }
-
- private:
-  [[noreturn]] void bad(const std::string& why) const {
-    throw Error(ErrorKind::Corrupt, "cannot read OpenEXR header: " + why);
-  }
-  uint8_t at(size_t i) const {
-    if (i >= b_.size()) bad("the header ends early");
-    return b_[i];
-  }
-  uint32_t u32(size_t i) const {
-    return uint32_t(at(i)) | uint32_t(at(i + 1)) << 8 | uint32_t(at(i + 2)) << 16 | uint32_t(at(i + 3)) << 24;
-  }
-  std::string_view name() {
-    const size_t start = pos_;
-    while (at(pos_) != 0)
-      if (++pos_ - start > 255) bad("a name of over 255 characters");
-    ++pos_;
-    return {reinterpret_cast<const char*>(b_.data() + start), pos_ - 1 - start};
-  }
-  uint64_t value_size() {
-    const auto size = int32_t(u32(pos_));
-    pos_ += 4;
-    if (size < 0 || uint64_t(size) > b_.size() - pos_)
-      bad(fmt::format("an attribute of {} bytes with {} bytes left", size, b_.size() - pos_));
-    return uint64_t(size);
-  }
-  // A preview image allocates width * height RGBA pixels: they must be in the attribute.
-  void preview(uint64_t size) const {
-    if (uint64_t{u32(pos_)} * u32(pos_ + 4) * 4 > size - 8) bad("a preview image larger than its attribute");
-  }
-
-  std::span<const uint8_t> b_;
-  size_t pos_ = 0;
-};
 
 // The most uncompressed bytes one compressed byte can stand for; 0 where no simple bound exists
 // (PIZ and DWA combine wavelets or DCT with Huffman and zlib).
@@ -202,7 +140,7 @@ Totals tile_totals(exr_const_context_t ctx, const exr_attr_box2i_t& window, uint
 }  // namespace
 
 ExrHeaderSummary check_exr_capacity(std::span<const uint8_t> bytes, const ImageLimits& limits) {
-  AttributeWalk(bytes).run();
+  check_exr_attributes(bytes);
   const Context ctx = open(bytes);
   exr_storage_t storage;
   exr_compression_t compression;

@@ -143,6 +143,15 @@ TEST(DecoderBounds, ExrAttributeGivenTwiceIsRefused) {
   EXPECT_NE(message.find("attribute 'dataWindow' appears twice"), std::string::npos) << message;
 }
 
+TEST(DecoderBounds, ExrAttributeWhoseValueIsNotItsDeclaredSizeIsRefused) {
+  // Found by fuzzing: a channel list declared as 55 bytes whose entries run on for 189. The C++ reader
+  // reads the entries, not the declared size, so it read the rest of the header at another offset
+  // than the core reader (and met an attribute claiming 1.8 GB there).
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("exr", "chlist_longer_than_declared.exr"));
+  const std::string message = error_of(ErrorKind::Corrupt, [&] { read_image(bytes); });
+  EXPECT_NE(message.find("of type chlist declares 55 bytes but holds 189"), std::string::npos) << message;
+}
+
 TEST(DecoderBounds, ExrWithADataWindowFarFromTheOriginDecodes) {
   // Data window (1e9, -1e9) .. (1e9 + 7, -1e9 + 3), half RGB with the generator's pattern 0.01 * (i % 97).
   const Image img = read_image(test::read_bytes(test::fuzz_corpus_path("exr", "far_window.exr"))).image;
