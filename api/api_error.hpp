@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "api/excerpt.hpp"
+
 namespace lp::api {
 
 class ApiError : public std::runtime_error {
@@ -18,10 +20,13 @@ class ApiError : public std::runtime_error {
   std::string code_;
 };
 
-// 400 naming the offending field: "invalid_field", "field 'count': must be ...".
+// 400 naming the offending field: "invalid_field", "field 'count': must be ...". Field names may come
+// from the client (unknown keys), so they are excerpted too.
 inline ApiError invalid_field(const std::string& field, const std::string& problem) {
-  return ApiError(400, "invalid_field", "field '" + field + "': " + problem);
+  return ApiError(400, "invalid_field", "field '" + excerpt(field) + "': " + problem);
 }
-inline ApiError not_found(const std::string& what) { return ApiError(404, "not_found", what); }
+inline ApiError not_found(const std::string& what) {
+  return ApiError(404, "not_found", what);
+}
 
 }  // namespace lp::api

@@ -1,9 +1,9 @@
 #include "api/params.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <set>
-
-#include <fmt/format.h>
 
 #include "api/api_error.hpp"
 
@@ -21,7 +21,7 @@ double parse_double(const std::string& field, const std::string& text) {
     if (used == text.size() && std::isfinite(v)) return v;
   } catch (const std::exception&) {
   }
-  throw invalid_field(field, fmt::format("'{}' is not a finite number", text));
+  throw invalid_field(field, fmt::format("'{}' is not a finite number", excerpt(text)));
 }
 
 void check_range(const std::string& field, double v, double min, double max) {
@@ -35,7 +35,7 @@ int64_t parse_int(const std::string& field, const std::string& text) {
     if (used == text.size()) return v;
   } catch (const std::exception&) {
   }
-  throw invalid_field(field, fmt::format("'{}' is not an integer", text));
+  throw invalid_field(field, fmt::format("'{}' is not an integer", excerpt(text)));
 }
 
 void check_int_range(const std::string& field, int64_t v, int64_t min, int64_t max) {
@@ -81,7 +81,7 @@ bool query_bool(const Query& q, const std::string& name, bool fallback) {
   if (!text || text->empty()) return fallback;
   if (*text == "true" || *text == "1") return true;
   if (*text == "false" || *text == "0") return false;
-  throw invalid_field(name, fmt::format("'{}' is not a boolean (true or false)", *text));
+  throw invalid_field(name, fmt::format("'{}' is not a boolean (true or false)", excerpt(*text)));
 }
 
 std::string query_enum(const Query& q, const std::string& name, const std::string& fallback,
@@ -90,21 +90,32 @@ std::string query_enum(const Query& q, const std::string& name, const std::strin
   if (!text || text->empty()) return fallback;
   for (const auto& a : allowed)
     if (*text == a) return a;
-  throw invalid_field(name, fmt::format("'{}' is not one of: {}", *text, join(allowed, ", ")));
+  throw invalid_field(name, fmt::format("'{}' is not one of: {}", excerpt(*text), join(allowed, ", ")));
 }
 
 Json parse_json_object(const std::string& body) {
-  Json j = Json::parse(body, nullptr, false);
+  const Json::parser_callback_t bound_depth = [](int depth, Json::parse_event_t event, Json&) {
+    const bool opens =
+        event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
+    if (opens && depth >= kMaxJsonDepth)
+      throw ApiError(
+          400, "json_too_deep",
+          fmt::format("the request body nests arrays and objects deeper than {} levels", kMaxJsonDepth));
+    return true;
+  };
+  Json j = Json::parse(body, bound_depth, false);
   if (j.is_discarded()) throw ApiError(400, "invalid_json", "the request body is not valid JSON");
   if (!j.is_object()) throw ApiError(400, "invalid_json", "the request body must be a JSON object");
   return j;
 }
 
-void reject_unknown_fields(const Json& body, const std::vector<std::string>& known, const std::string& prefix) {
+void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,
+                           const std::string& prefix) {
   const std::set<std::string> names(known.begin(), known.end());
   for (const auto& [key, value] : body.items())
     if (!names.count(key))
-      throw invalid_field(field_name(prefix, key), "unknown field (expected one of: " + join(known, ", ") + ")");
+      throw invalid_field(field_name(prefix, key),
+                          "unknown field (expected one of: " + join(known, ", ") + ")");
 }
 
 int64_t json_int(const Json& body, const std::string& name, int64_t fallback, int64_t min, int64_t max,
@@ -115,11 +126,11 @@ int64_t json_int(const Json& body, const std::string& name, int64_t fallback, in
   int64_t v;
   if (it->is_number_integer()) {
     v = it->get<int64_t>();
-  } else if (it->is_number_float() && std::isfinite(it->get<double>()) && std::trunc(it->get<double>()) == it->get<double>() &&
-             std::abs(it->get<double>()) < 9e15) {
+  } else if (it->is_number_float() && std::isfinite(it->get<double>()) &&
+             std::trunc(it->get<double>()) == it->get<double>() && std::abs(it->get<double>()) < 9e15) {
     v = int64_t(it->get<double>());
   } else {
-    throw invalid_field(field, fmt::format("must be an integer, got {}", it->dump()));
+    throw invalid_field(field, fmt::format("must be an integer, got {}", describe(*it)));
   }
   check_int_range(field, v, min, max);
   return v;
@@ -130,7 +141,7 @@ double json_double(const Json& body, const std::string& name, double fallback, d
   auto it = body.find(name);
   if (it == body.end() || it->is_null()) return fallback;
   const std::string field = field_name(prefix, name);
-  if (!it->is_number()) throw invalid_field(field, fmt::format("must be a number, got {}", it->dump()));
+  if (!it->is_number()) throw invalid_field(field, fmt::format("must be a number, got {}", describe(*it)));
   const double v = it->get<double>();
   if (!std::isfinite(v)) throw invalid_field(field, "must be finite");
   check_range(field, v, min, max);
@@ -140,7 +151,9 @@ double json_double(const Json& body, const std::string& name, double fallback, d
 bool json_bool(const Json& body, const std::string& name, bool fallback, const std::string& prefix) {
   auto it = body.find(name);
   if (it == body.end() || it->is_null()) return fallback;
-  if (!it->is_boolean()) throw invalid_field(field_name(prefix, name), fmt::format("must be true or false, got {}", it->dump()));
+  if (!it->is_boolean())
+    throw invalid_field(field_name(prefix, name),
+                        fmt::format("must be true or false, got {}", describe(*it)));
   return it->get<bool>();
 }
 
@@ -152,7 +165,7 @@ std::string json_string(const Json& body, const std::string& name, const std::op
     if (fallback) return *fallback;
     throw invalid_field(field, "is required");
   }
-  if (!it->is_string()) throw invalid_field(field, fmt::format("must be a string, got {}", it->dump()));
+  if (!it->is_string()) throw invalid_field(field, fmt::format("must be a string, got {}", describe(*it)));
   return it->get<std::string>();
 }
 
@@ -161,7 +174,8 @@ std::string json_enum(const Json& body, const std::string& name, const std::stri
   const std::string v = json_string(body, name, fallback, prefix);
   for (const auto& a : allowed)
     if (v == a) return v;
-  throw invalid_field(field_name(prefix, name), fmt::format("'{}' is not one of: {}", v, join(allowed, ", ")));
+  throw invalid_field(field_name(prefix, name),
+                      fmt::format("'{}' is not one of: {}", excerpt(v), join(allowed, ", ")));
 }
 
 }  // namespace lp::api

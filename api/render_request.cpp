@@ -1,11 +1,11 @@
 #include "api/render_request.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "api/api_error.hpp"
 #include "engine/fresnel/metals.hpp"
@@ -31,12 +31,12 @@ const Json* member(const Json& parent, const std::string& name) {
 const Json* object_member(const Json& parent, const std::string& name, const std::string& prefix) {
   const Json* v = member(parent, name);
   if (v && !v->is_object())
-    throw invalid_field(field_name(prefix, name), fmt::format("must be an object, got {}", v->dump()));
+    throw invalid_field(field_name(prefix, name), fmt::format("must be an object, got {}", describe(*v)));
   return v;
 }
 
 float component(const Json& v, const std::string& field, double min, double max) {
-  if (!v.is_number()) throw invalid_field(field, fmt::format("must be a number, got {}", v.dump()));
+  if (!v.is_number()) throw invalid_field(field, fmt::format("must be a number, got {}", describe(v)));
   const double x = v.get<double>();
   if (!std::isfinite(x) || x < min || x > max)
     throw invalid_field(field, fmt::format("{} is out of range [{}, {}]", x, min, max));
@@ -44,13 +44,13 @@ float component(const Json& v, const std::string& field, double min, double max)
 }
 
 // [x, y, z] with every component in [min, max]; nullopt if absent.
-std::optional<Vec3> json_vec3(const Json& parent, const std::string& name, const std::string& prefix, double min,
-                              double max) {
+std::optional<Vec3> json_vec3(const Json& parent, const std::string& name, const std::string& prefix,
+                              double min, double max) {
   const Json* v = member(parent, name);
   if (!v) return std::nullopt;
   const std::string field = field_name(prefix, name);
   if (!v->is_array() || v->size() != 3)
-    throw invalid_field(field, fmt::format("must be an array of 3 numbers, got {}", v->dump()));
+    throw invalid_field(field, fmt::format("must be an array of 3 numbers, got {}", describe(*v)));
   return Vec3{component((*v)[0], field + "[0]", min, max), component((*v)[1], field + "[1]", min, max),
               component((*v)[2], field + "[2]", min, max)};
 }
@@ -74,8 +74,8 @@ Rgb json_rgb(const Json& parent, const std::string& name, const std::string& pre
 }
 
 // A required string that must be one of `allowed`.
-std::string required_enum(const Json& parent, const std::string& name, const std::vector<std::string>& allowed,
-                          const std::string& prefix) {
+std::string required_enum(const Json& parent, const std::string& name,
+                          const std::vector<std::string>& allowed, const std::string& prefix) {
   const std::string v = json_string(parent, name, std::nullopt, prefix);
   return json_enum(parent, name, v, allowed, prefix);
 }
@@ -101,7 +101,8 @@ Material parse_conductor(const Json& m, const std::string& prefix) {
   c.roughness = json_float(m, "roughness", 0.0, 0.0, 1.0, prefix);
   const bool has_metal = member(m, "metal"), has_eta = member(m, "eta"), has_k = member(m, "k");
   if (has_metal) {
-    if (has_eta || has_k) throw invalid_field(field_name(prefix, "metal"), "give either metal or eta and k, not both");
+    if (has_eta || has_k)
+      throw invalid_field(field_name(prefix, "metal"), "give either metal or eta and k, not both");
     const auto& names = metal_names();
     const std::string metal = json_enum(m, "metal", names.front(), names, prefix);
     c.eta = lookup_metal(metal).eta_rgb();
@@ -163,7 +164,7 @@ MeshObject parse_mesh(const Json& o, const std::string& prefix) {
 }
 
 SceneObject parse_object(const Json& o, const std::string& prefix) {
-  if (!o.is_object()) throw invalid_field(prefix, fmt::format("must be an object, got {}", o.dump()));
+  if (!o.is_object()) throw invalid_field(prefix, fmt::format("must be an object, got {}", describe(o)));
   const std::string type = required_enum(o, "type", {"sphere", "mesh", "plane"}, prefix);
   SceneObject object;
   if (type == "sphere") {
@@ -190,12 +191,14 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
 Camera parse_camera(const Json& c, Camera camera) {
   const std::string prefix = "scene.camera";
   reject_unknown_fields(c, {"position", "look_at", "up", "fov_deg"}, prefix);
-  camera.position = json_vec3(c, "position", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.position);
+  camera.position =
+      json_vec3(c, "position", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.position);
   camera.look_at = json_vec3(c, "look_at", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.look_at);
   camera.up = json_vec3(c, "up", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.up);
   camera.fov_deg = json_float(c, "fov_deg", camera.fov_deg, 1.0, 179.0, prefix);
   const Vec3 view = camera.look_at - camera.position;
-  if (!(length(view) > 1e-6f)) throw invalid_field(prefix + ".look_at", "must differ from scene.camera.position");
+  if (!(length(view) > 1e-6f))
+    throw invalid_field(prefix + ".look_at", "must differ from scene.camera.position");
   const Vec3 up = nonzero_direction(camera.up, prefix + ".up");
   if (length(cross(normalize(view), up)) < 1e-4f)
     throw invalid_field(prefix + ".up", "must not be parallel to the viewing direction (look_at - position)");
@@ -210,15 +213,18 @@ SceneDesc parse_scene(const Json* s, const RenderLimits& limits, std::optional<s
   if (objects && member(*s, "preset")) throw invalid_field("scene.objects", "not allowed with scene.preset");
   SceneDesc scene;
   if (objects) {
-    if (!objects->is_array()) throw invalid_field("scene.objects", fmt::format("must be an array, got {}", objects->dump()));
+    if (!objects->is_array())
+      throw invalid_field("scene.objects", fmt::format("must be an array, got {}", describe(*objects)));
     if (int64_t(objects->size()) > limits.max_objects)
-      throw invalid_field("scene.objects", fmt::format("{} objects is over the limit of {}", objects->size(), limits.max_objects));
+      throw invalid_field("scene.objects", fmt::format("{} objects is over the limit of {}", objects->size(),
+                                                       limits.max_objects));
     for (size_t i = 0; i < objects->size(); ++i)
       scene.objects.push_back(parse_object((*objects)[i], fmt::format("scene.objects[{}]", i)));
   } else {
     preset = json_enum(*s, "preset", "sphere", {"sphere", "materials", "furnace"}, "scene");
     auto found = scene_preset(*preset);
-    if (!found) throw invalid_field("scene.preset", fmt::format("preset '{}' is not available", *preset));
+    if (!found)
+      throw invalid_field("scene.preset", fmt::format("preset '{}' is not available", excerpt(*preset)));
     scene = std::move(*found);
   }
   if (const Json* c = object_member(*s, "camera", "scene")) scene.camera = parse_camera(*c, scene.camera);
@@ -245,11 +251,16 @@ Lighting parse_lighting(const Json* l, const RenderLimits& limits) {
 
 const char* lighting_mode_name(LightingMode mode) {
   switch (mode) {
-    case LightingMode::EnvMap: return "envmap";
-    case LightingMode::Uniform: return "uniform";
-    case LightingMode::Bsdf: return "bsdf";
-    case LightingMode::MedianCut: return "median_cut";
-    case LightingMode::MedianCutAll: return "median_cut_all";
+    case LightingMode::EnvMap:
+      return "envmap";
+    case LightingMode::Uniform:
+      return "uniform";
+    case LightingMode::Bsdf:
+      return "bsdf";
+    case LightingMode::MedianCut:
+      return "median_cut";
+    case LightingMode::MedianCutAll:
+      return "median_cut_all";
   }
   return "?";
 }

@@ -1,8 +1,12 @@
 #pragma once
 // Everything the handlers share: the options and the registries.
+#include <atomic>
+#include <memory>
+
 #include "server/envmap_registry.hpp"
 #include "server/job_manager.hpp"
 #include "server/options.hpp"
+#include "server/state_store.hpp"
 
 namespace lp::server {
 
@@ -13,6 +17,8 @@ inline JobManagerConfig render_job_config(const Options& o) {
 struct App {
   Options options;
   EnvMapRegistry envmaps;
+  std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
+  std::atomic<int> event_streams{0};  // render event streams open now
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)

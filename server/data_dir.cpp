@@ -1,10 +1,23 @@
 #include "server/data_dir.hpp"
 
+#include <unistd.h>
+
+#include <stdexcept>
+
 #include "api/api_error.hpp"
 
 namespace lp::server {
 
 namespace fs = std::filesystem;
+
+void check_data_dir(const Options& options) {
+  if (!options.data_dir) return;
+  const fs::path& dir = *options.data_dir;
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) throw std::runtime_error("--data-dir " + dir.string() + " does not exist");
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error("--data-dir " + dir.string() + " is not a directory");
+  if (::access(dir.c_str(), R_OK | X_OK) != 0) throw std::runtime_error("--data-dir " + dir.string() + " is not readable");
+}
 
 fs::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field) {
   if (!options.data_dir) throw api::invalid_field(field, "the server was started without --data-dir; paths are not accepted");

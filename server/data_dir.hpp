@@ -7,9 +7,14 @@
 
 namespace lp::server {
 
+// Checks at start that --data-dir, if given, is a directory the server can list and read; throws
+// std::runtime_error saying what is wrong.
+void check_data_dir(const Options& options);
+
 // Resolves `relative` inside the data dir. Throws ApiError 400 naming `field` if there is no data
 // dir, the path is absolute, has a ".." component, or resolves (through links) outside the dir;
 // 404 if the file does not exist.
-std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field);
+std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative,
+                                          const std::string& field);
 
 }  // namespace lp::server

@@ -11,12 +11,18 @@ namespace {
 
 const char* error_code(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::InvalidArgument: return "invalid_argument";
-    case ErrorKind::Unsupported: return "unsupported";
-    case ErrorKind::Corrupt: return "corrupt";
-    case ErrorKind::InvalidData: return "invalid_data";
-    case ErrorKind::TooLarge: return "too_large";
-    case ErrorKind::NotFound: return "not_found";
+    case ErrorKind::InvalidArgument:
+      return "invalid_argument";
+    case ErrorKind::Unsupported:
+      return "unsupported";
+    case ErrorKind::Corrupt:
+      return "corrupt";
+    case ErrorKind::InvalidData:
+      return "invalid_data";
+    case ErrorKind::TooLarge:
+      return "too_large";
+    case ErrorKind::NotFound:
+      return "not_found";
   }
   return "internal";
 }
@@ -34,20 +40,35 @@ std::string iso8601(std::chrono::system_clock::time_point t) {
 
 const char* status_name(JobStatus status) {
   switch (status) {
-    case JobStatus::Queued: return "queued";
-    case JobStatus::Running: return "running";
-    case JobStatus::Done: return "done";
-    case JobStatus::Failed: return "failed";
-    case JobStatus::Cancelled: return "cancelled";
+    case JobStatus::Queued:
+      return "queued";
+    case JobStatus::Running:
+      return "running";
+    case JobStatus::Done:
+      return "done";
+    case JobStatus::Failed:
+      return "failed";
+    case JobStatus::Cancelled:
+      return "cancelled";
+    case JobStatus::Interrupted:
+      return "interrupted";
   }
   return "?";
 }
 
-bool is_finished(JobStatus status) {
-  return status == JobStatus::Done || status == JobStatus::Failed || status == JobStatus::Cancelled;
+std::optional<JobStatus> parse_status(const std::string& name) {
+  for (const auto s : {JobStatus::Queued, JobStatus::Running, JobStatus::Done, JobStatus::Failed,
+                       JobStatus::Cancelled, JobStatus::Interrupted})
+    if (name == status_name(s)) return s;
+  return std::nullopt;
 }
 
-Job::Job(std::string id) : id_(std::move(id)), created_(std::chrono::system_clock::now()) {}
+bool is_finished(JobStatus status) {
+  return status != JobStatus::Queued && status != JobStatus::Running;
+}
+
+Job::Job(std::string id, std::chrono::system_clock::time_point created, double earlier_elapsed_s)
+    : id_(std::move(id)), created_(created), earlier_elapsed_s_(earlier_elapsed_s) {}
 
 JobStatus Job::status() const {
   std::lock_guard lock(mutex_);
@@ -63,9 +84,9 @@ double Job::progress() const {
 
 double Job::elapsed_s() const {
   std::lock_guard lock(mutex_);
-  if (!started_) return 0.0;
+  if (!started_) return earlier_elapsed_s_;
   const auto end = ended_.value_or(std::chrono::steady_clock::now());
-  return std::chrono::duration<double>(end - *started_).count();
+  return earlier_elapsed_s_ + std::chrono::duration<double>(end - *started_).count();
 }
 
 std::optional<JobError> Job::error() const {
@@ -82,7 +103,8 @@ nlohmann::json Job::status_json() const {
   out["created"] = iso8601(created_);
   out["cancel_requested"] = cancel_requested();
   const auto err = error();
-  out["error"] = err ? nlohmann::json{{"code", err->code}, {"message", err->message}} : nlohmann::json(nullptr);
+  out["error"] =
+      err ? nlohmann::json{{"code", err->code}, {"message", err->message}} : nlohmann::json(nullptr);
   describe(out);
   return out;
 }
@@ -92,14 +114,33 @@ bool Job::wait_finished_for(std::chrono::milliseconds timeout) const {
   return finished_cv_.wait_for(lock, timeout, [&] { return is_finished(status_); });
 }
 
-bool Job::request_cancel() {
-  cancel_.store(true);
-  std::unique_lock lock(mutex_);
-  if (status_ != JobStatus::Queued) return false;
-  status_ = JobStatus::Cancelled;
-  lock.unlock();
+void Job::restore_ended(JobStatus status, std::optional<JobError> error) {
+  std::lock_guard lock(mutex_);
+  status_ = status;
+  error_ = std::move(error);
+}
+
+bool Job::end_if_queued(JobStatus status) {
+  {
+    std::lock_guard lock(mutex_);
+    if (status_ != JobStatus::Queued) return false;
+    status_ = status;
+  }
+  ending(status, std::nullopt);
   finished_cv_.notify_all();
   return true;
+}
+
+bool Job::request_cancel() {
+  stop_.store(StopRequest::Cancel);
+  halt_.store(true);
+  return end_if_queued(JobStatus::Cancelled);
+}
+
+bool Job::request_interrupt() {
+  auto expected = StopRequest::None;
+  stop_.compare_exchange_strong(expected, StopRequest::Interrupt);
+  return end_if_queued(JobStatus::Interrupted);
 }
 
 bool Job::start() {
@@ -111,6 +152,7 @@ bool Job::start() {
 }
 
 void Job::finish(JobStatus status, std::optional<JobError> error) {
+  ending(status, error);
   {
     std::lock_guard lock(mutex_);
     status_ = status;
@@ -124,7 +166,11 @@ void Job::execute() {
   if (!start()) return;
   try {
     const bool completed = run();
-    finish(completed ? JobStatus::Done : JobStatus::Cancelled, std::nullopt);
+    const bool interrupted = stop_.load() == StopRequest::Interrupt;
+    finish(completed     ? JobStatus::Done
+           : interrupted ? JobStatus::Interrupted
+                         : JobStatus::Cancelled,
+           std::nullopt);
   } catch (const Error& e) {
     finish(JobStatus::Failed, JobError{error_code(e.kind()), e.what()});
   } catch (const std::exception& e) {

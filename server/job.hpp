@@ -7,17 +7,18 @@
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 namespace lp::server {
 
-enum class JobStatus { Queued, Running, Done, Failed, Cancelled };
+// Interrupted: stopped by a shutdown (or found unfinished after a crash); it can be resumed as a new run.
+enum class JobStatus { Queued, Running, Done, Failed, Cancelled, Interrupted };
 
-const char* status_name(JobStatus status);  // "queued", "running", ...
-bool is_finished(JobStatus status);         // done, failed or cancelled
+const char* status_name(JobStatus status);                       // "queued", "running", ...
+std::optional<JobStatus> parse_status(const std::string& name);  // inverse of status_name
+bool is_finished(JobStatus status);                              // done, failed, cancelled or interrupted
 
 struct JobError {
   std::string code;  // like the API error codes: "invalid_argument", "not_found", "internal", ...
@@ -26,16 +27,19 @@ struct JobError {
 
 class Job {
  public:
-  explicit Job(std::string id);
+  // `created` and `earlier_elapsed_s` carry over from an earlier run when the job continues one.
+  explicit Job(std::string id,
+               std::chrono::system_clock::time_point created = std::chrono::system_clock::now(),
+               double earlier_elapsed_s = 0);
   virtual ~Job() = default;
   Job(const Job&) = delete;
   Job& operator=(const Job&) = delete;
 
   const std::string& id() const { return id_; }
   JobStatus status() const;
-  bool cancel_requested() const { return cancel_.load(); }
+  bool cancel_requested() const { return stop_.load() == StopRequest::Cancel; }
   double progress() const;   // 0..1: work units done / total (1 when done)
-  double elapsed_s() const;  // since the job started running (0 while queued; frozen once finished)
+  double elapsed_s() const;  // running time, earlier runs included (frozen once finished)
   std::optional<JobError> error() const;
   std::chrono::system_clock::time_point created() const { return created_; }
 
@@ -48,29 +52,52 @@ class Job {
   // Memory the job keeps once finished (its result), so the manager can bound what it retains.
   virtual int64_t retained_bytes() const { return 0; }
 
+  // Sets the final status of a job restored from an earlier run, before it is handed to the manager.
+  void restore_ended(JobStatus status, std::optional<JobError> error);
+
  protected:
+  // Called once with the job's final status, just before others can see it (from the thread that sets it).
+  virtual void ending(JobStatus, const std::optional<JobError>&) {}
+  // Called when the manager drops the job (removed by a client, or beyond the finished-job limits).
+  virtual void forgotten() {}
+  // A shutdown asked the job to stop at its next safe point (a pass boundary) and become interrupted.
+  bool interrupt_requested() const { return stop_.load() == StopRequest::Interrupt; }
+
   // Does the work on a runner thread, inside the job's task arena. Returns true when all the work was
   // done, false when it stopped early because cancel_flag() became true. Throws lp::Error (or any
   // std::exception) to fail the job.
   virtual bool run() = 0;
   virtual void describe(nlohmann::json& out) const = 0;
 
-  const std::atomic<bool>& cancel_flag() const { return cancel_; }
-  void set_work_total(int64_t units) { work_total_.store(units); }
+  // Checked by the work at every step: set by a cancel, or when a shutdown's grace period ends.
+  const std::atomic<bool>& cancel_flag() const { return halt_; }
+  void set_work(int64_t total, int64_t done) {
+    work_total_.store(total);
+    work_done_.store(done);
+  }
   void add_work_done(int64_t units) { work_done_.fetch_add(units, std::memory_order_relaxed); }
 
  private:
   friend class JobManager;
+  enum class StopRequest { None, Cancel, Interrupt };
+
   // Queued -> cancelled at once (true); a running job only gets the flag and stops at its next check.
   bool request_cancel();
+  // Queued -> interrupted at once (true); a running job stops at its next safe point.
+  bool request_interrupt();
+  void halt() { halt_.store(true); }  // stop at the next check, safe point or not
   // Runs the job to a final status; never throws.
   void execute();
   bool start();  // queued -> running; false if it was cancelled meanwhile
   void finish(JobStatus status, std::optional<JobError> error);
+  // Queued -> `status` (true); otherwise nothing.
+  bool end_if_queued(JobStatus status);
 
   const std::string id_;
   const std::chrono::system_clock::time_point created_;
-  std::atomic<bool> cancel_{false};
+  const double earlier_elapsed_s_;
+  std::atomic<StopRequest> stop_{StopRequest::None};
+  std::atomic<bool> halt_{false};
   std::atomic<int64_t> work_total_{0};
   std::atomic<int64_t> work_done_{0};
 

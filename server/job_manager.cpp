@@ -1,13 +1,13 @@
 #include "server/job_manager.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <random>
-
 #include <fmt/format.h>
 #include <oneapi/tbb/info.h>
 #include <oneapi/tbb/task_arena.h>
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
 
 #include "engine/core/rng.hpp"
 
@@ -19,7 +19,9 @@ JobManager::JobManager(const JobManagerConfig& config) : config_(config), id_sta
     runners_.emplace_back([this, i] { runner_loop(i); });
 }
 
-JobManager::~JobManager() { shutdown(); }
+JobManager::~JobManager() {
+  shutdown();
+}
 
 std::string JobManager::new_id() {
   std::lock_guard lock(mutex_);
@@ -32,12 +34,24 @@ bool JobManager::submit(std::shared_ptr<Job> job) {
     std::lock_guard lock(mutex_);
     // Capacity counts running jobs too, so a job is accepted whenever a runner is idle, and the
     // answer does not depend on whether a runner has taken the previous job off the queue yet.
-    if (stopping_ || queue_.size() + running_.size() >= size_t(config_.max_queued + config_.max_running)) return false;
+    if (stopping_ || queue_.size() + running_.size() >= size_t(config_.max_queued + config_.max_running))
+      return false;
+    if (auto it = jobs_.find(job->id()); it != jobs_.end()) {
+      if (!is_finished(it->second->status())) return false;
+      drop_finished(it->second);
+    }
     jobs_[job->id()] = job;
     queue_.push_back(std::move(job));
   }
   work_cv_.notify_one();
   return true;
+}
+
+void JobManager::restore(std::shared_ptr<Job> job) {
+  std::lock_guard lock(mutex_);
+  jobs_[job->id()] = job;
+  // Interrupted jobs wait for a resume and are not subject to the finished-job limits.
+  if (job->status() != JobStatus::Interrupted) retire(job);
 }
 
 std::shared_ptr<Job> JobManager::find(const std::string& id) const {
@@ -52,7 +66,8 @@ std::vector<std::shared_ptr<Job>> JobManager::list() const {
     std::lock_guard lock(mutex_);
     for (const auto& [id, job] : jobs_) out.push_back(job);
   }
-  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a->created() < b->created(); });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& a, const auto& b) { return a->created() < b->created(); });
   return out;
 }
 
@@ -65,11 +80,7 @@ JobManager::CancelOutcome JobManager::cancel_or_remove(const std::string& id) {
     job = it->second;
     if (is_finished(job->status())) {
       jobs_.erase(it);
-      auto f = std::find(finished_.begin(), finished_.end(), job);
-      if (f != finished_.end()) {
-        finished_bytes_ -= job->retained_bytes();
-        finished_.erase(f);
-      }
+      forget(job);
       return CancelOutcome::Removed;
     }
   }
@@ -106,19 +117,30 @@ int JobManager::running_count() const {
   return int(running_.size());
 }
 
-void JobManager::shutdown() {
-  std::vector<std::shared_ptr<Job>> to_cancel;
+void JobManager::shutdown(std::chrono::milliseconds grace) {
+  std::vector<std::shared_ptr<Job>> queued, running;
   {
     std::lock_guard lock(mutex_);
     if (stopping_) return;
     stopping_ = true;
-    to_cancel.assign(queue_.begin(), queue_.end());
-    to_cancel.insert(to_cancel.end(), running_.begin(), running_.end());
+    queued.assign(queue_.begin(), queue_.end());
+    running = running_;
     queue_.clear();
   }
-  if (!to_cancel.empty()) spdlog::info("shutting down: cancelling {} render job(s)", to_cancel.size());
-  for (const auto& job : to_cancel) job->request_cancel();
   work_cv_.notify_all();
+  if (!queued.empty() || !running.empty())
+    spdlog::info("shutting down: interrupting {} queued and {} running job(s), {} ms grace", queued.size(),
+                 running.size(), grace.count());
+  for (const auto& job : queued) job->request_interrupt();
+  for (const auto& job : running) job->request_interrupt();
+  const auto deadline = std::chrono::steady_clock::now() + grace;
+  for (const auto& job : running) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (job->wait_finished_for(std::max(left, std::chrono::milliseconds(0)))) continue;
+    spdlog::warn("job {} did not reach the end of a pass within the grace period: halting it", job->id());
+    job->halt();
+  }
   runners_.clear();  // joins
 }
 
@@ -133,7 +155,8 @@ std::shared_ptr<Job> JobManager::next_job() {
 }
 
 void JobManager::runner_loop(int runner) {
-  const int concurrency = config_.arena_concurrency > 0 ? config_.arena_concurrency : tbb::info::default_concurrency();
+  const int concurrency =
+      config_.arena_concurrency > 0 ? config_.arena_concurrency : tbb::info::default_concurrency();
   // Low priority: oneTBB gives its workers to interactive requests (sampling, previews), which run in
   // normal-priority arenas, before the renders.
   tbb::task_arena arena(concurrency, 1, tbb::task_arena::priority::low);
@@ -148,16 +171,28 @@ void JobManager::runner_loop(int runner) {
 
 void JobManager::retire(const std::shared_ptr<Job>& job) {
   if (!jobs_.count(job->id())) return;  // removed by a DELETE between its end and now
+  if (stopping_ && job->status() == JobStatus::Interrupted) return;  // kept for a resume after the restart
   finished_.push_back(job);
   finished_bytes_ += job->retained_bytes();
   while (finished_.size() > 1 &&
          (int(finished_.size()) > config_.max_finished || finished_bytes_ > config_.max_finished_bytes)) {
     const auto oldest = finished_.front();
-    finished_.pop_front();
-    finished_bytes_ -= oldest->retained_bytes();
     jobs_.erase(oldest->id());
+    forget(oldest);
     spdlog::debug("dropped finished job {} (finished-job limit)", oldest->id());
   }
+}
+
+void JobManager::drop_finished(const std::shared_ptr<Job>& job) {
+  auto f = std::find(finished_.begin(), finished_.end(), job);
+  if (f == finished_.end()) return;
+  finished_bytes_ -= job->retained_bytes();
+  finished_.erase(f);
+}
+
+void JobManager::forget(const std::shared_ptr<Job>& job) {
+  drop_finished(job);
+  job->forgotten();
 }
 
 }  // namespace lp::server

@@ -3,6 +3,7 @@
 // time inside its own tbb::task_arena (so concurrent jobs share the cores fairly: oneTBB divides its
 // workers between the arenas), and a bounded list of finished jobs kept for their results (oldest dropped).
 // Thread-safe. The destructor cancels every job and joins the runners.
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -18,11 +19,11 @@
 namespace lp::server {
 
 struct JobManagerConfig {
-  int max_running = 2;                 // runner threads = jobs running at once
-  int max_queued = 16;                 // jobs waiting for a runner (beyond the idle runners)
-  int max_finished = 64;               // finished jobs kept
+  int max_running = 2;                            // runner threads = jobs running at once
+  int max_queued = 16;                            // jobs waiting for a runner (beyond the idle runners)
+  int max_finished = 64;                          // finished jobs kept
   int64_t max_finished_bytes = int64_t{1} << 30;  // and the results they keep
-  int arena_concurrency = 0;           // threads per job arena; 0 = all cores
+  int arena_concurrency = 0;                      // threads per job arena; 0 = all cores
 };
 
 class JobManager {
@@ -36,11 +37,13 @@ class JobManager {
   std::string new_id();
 
   // Queues the job; false if max_running + max_queued jobs are already queued or running, or the manager
-  // is shutting down.
+  // is shutting down. A job with the id of an ended job replaces it (a resumed run).
   bool submit(std::shared_ptr<Job> job);
+  // Adds a job that ended in an earlier run of the server (restored from the state directory).
+  void restore(std::shared_ptr<Job> job);
 
   std::shared_ptr<Job> find(const std::string& id) const;  // nullptr if unknown (or dropped)
-  std::vector<std::shared_ptr<Job>> list() const;           // oldest first
+  std::vector<std::shared_ptr<Job>> list() const;          // oldest first
 
   enum class CancelOutcome { NotFound, Cancelled, Cancelling, Removed };
   // A queued job is cancelled at once, a running one is asked to stop (it stops at its next check),
@@ -51,16 +54,19 @@ class JobManager {
   // closest to the end finishes, clamped to [1, 60].
   int retry_after_s() const;
 
-  // Cancels every job and joins the runners; later submissions are refused. Idempotent.
-  void shutdown();
+  // Refuses later submissions, interrupts the queued jobs, asks the running ones to stop at their next
+  // safe point, halts those still running after `grace`, and joins the runners. Idempotent.
+  void shutdown(std::chrono::milliseconds grace = {});
 
   int queued_count() const;
   int running_count() const;
 
  private:
   void runner_loop(int runner);
-  void retire(const std::shared_ptr<Job>& job);  // adds to the finished list and drops the oldest
-  std::shared_ptr<Job> next_job();                // blocks; nullptr when stopping
+  void retire(const std::shared_ptr<Job>& job);         // adds to the finished list and drops the oldest
+  void drop_finished(const std::shared_ptr<Job>& job);  // takes an ended job out of the finished list
+  void forget(const std::shared_ptr<Job>& job);         // and lets it delete what it keeps
+  std::shared_ptr<Job> next_job();                      // blocks; nullptr when stopping
 
   const JobManagerConfig config_;
   mutable std::mutex mutex_;

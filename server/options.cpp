@@ -35,6 +35,9 @@ Usage: lightprobe-server [options]
   --max-finished-jobs N  finished renders kept with their images, oldest dropped (default 64)
   --max-finished-mb N    MiB of images kept by finished renders, oldest dropped (default 1024)
   --max-event-streams N  concurrent render event streams (default 8)
+  --state-dir DIR        uploaded maps and render jobs kept across restarts (default ./lightprobe-state)
+  --resume-interrupted   at start, resume the renders a crash or a stop interrupted
+  --shutdown-grace-s N   on SIGTERM/SIGINT, seconds running renders get to finish their pass (default 10)
   --list-routes          print every registered route (METHOD PATH) and exit
   --version              print the version and exit
   --help                 print this help and exit
@@ -116,6 +119,13 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.max_finished_mb = parse_count(flag, value(), 1, 1 << 24);
     } else if (flag == "--max-event-streams") {
       o.max_event_streams = int(parse_count(flag, value(), 0, 4096));
+    } else if (flag == "--state-dir") {
+      o.state_dir = value();
+      if (o.state_dir.empty()) throw std::invalid_argument("--state-dir needs a directory");
+    } else if (flag == "--resume-interrupted") {
+      o.resume_interrupted = true;
+    } else if (flag == "--shutdown-grace-s") {
+      o.shutdown_grace_s = int(parse_count(flag, value(), 0, 3600));
     } else {
       throw std::invalid_argument("unknown option '" + flag + "' (see --help)");
     }

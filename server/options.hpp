@@ -34,6 +34,10 @@ struct Options {
   int max_finished_jobs = 64;
   int64_t max_finished_mb = 1024;  // images kept by finished jobs
   int max_event_streams = 8;       // concurrent GET .../events streams (each holds an HTTP worker)
+  // Lifecycle: what survives a restart, and how a stop ends the work in flight.
+  std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
+  bool resume_interrupted = false;                       // resume interrupted renders at start
+  int shutdown_grace_s = 10;  // on SIGTERM/SIGINT, time for running renders to finish their pass
 };
 
 // Parses argv over `defaults`. Returns nullopt after printing --help or --version (exit 0); throws

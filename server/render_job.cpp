@@ -1,9 +1,14 @@
 #include "server/render_job.hpp"
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
-#include <spdlog/spdlog.h>
+#include "engine/image/image_io.hpp"
+#include "server/envmap_fingerprint.hpp"
 
 namespace lp::server {
 
@@ -19,8 +24,23 @@ std::vector<int> pass_schedule(int spp, int max_pass) {
   return passes;
 }
 
-RenderJob::RenderJob(std::string id, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap)
-    : Job(std::move(id)), request_(std::move(request)), envmap_(std::move(envmap)) {}
+RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
+                     std::shared_ptr<const Image> image, StateStore* store)
+    : Job(record.id, record.created, record.elapsed_s),
+      request_(std::move(request)),
+      request_json_(std::move(record.request)),
+      envmap_(std::move(envmap)),
+      store_(store),
+      earlier_stats_(record.stats),
+      earlier_render_s_(record.render_s),
+      image_(std::move(image)),
+      spp_done_(image_ ? record.spp_done : 0),
+      stats_(record.stats),
+      render_s_(record.render_s),
+      image_file_(image_ ? record.image_file : ""),
+      envmap_fingerprint_(record.envmap_fingerprint) {
+  set_work(request_.settings.spp, spp_done_);  // until run() counts in tiles
+}
 
 RenderImage RenderJob::image() const {
   std::lock_guard lock(mutex_);
@@ -37,21 +57,95 @@ int64_t RenderJob::retained_bytes() const {
   return image_ ? int64_t(image_->data().size_bytes()) : 0;
 }
 
+RenderRecord RenderJob::record() const {
+  return record(status(), error());
+}
+
+RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& error) const {
+  RenderRecord r;
+  r.id = id();
+  r.created = created();
+  r.request = request_json_;
+  r.status = status;
+  r.error = error;
+  r.elapsed_s = elapsed_s();
+  std::lock_guard lock(mutex_);
+  r.spp_done = spp_done_;
+  r.image_file = image_file_;
+  r.envmap_fingerprint = envmap_fingerprint_;
+  r.stats = stats_;
+  r.render_s = render_s_;
+  return r;
+}
+
+void RenderJob::save_record(JobStatus status, const std::optional<JobError>& error) const {
+  if (!store_) return;
+  std::lock_guard lock(store_mutex_);
+  if (deleted_) return;
+  try {
+    store_->write_record(store_->renders_dir() / (id() + ".json"), record_json(record(status, error)));
+  } catch (const std::exception& e) {
+    spdlog::error("render {}: cannot save its record: {}", id(), e.what());
+  }
+}
+
+void RenderJob::delete_state() const {
+  if (!store_) return;
+  std::lock_guard lock(store_mutex_);
+  deleted_ = true;
+  store_->remove(store_->renders_dir() / (id() + ".json"));
+  std::lock_guard image_lock(mutex_);
+  if (!image_file_.empty()) store_->remove(store_->renders_dir() / image_file_);
+}
+
 void RenderJob::publish(const render::Renderer& renderer, double render_s) {
   auto image = std::make_shared<const Image>(renderer.image());
+  const auto stats = renderer.stats();
   std::lock_guard lock(mutex_);
   image_ = std::move(image);
   spp_done_ = renderer.spp_done();
-  stats_ = renderer.stats();
-  render_s_ = render_s;
+  stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};
+  render_s_ = earlier_render_s_ + render_s;
+}
+
+void RenderJob::checkpoint() {
+  if (!store_) return;
+  const RenderImage current = image();
+  const std::string file = fmt::format("{}.{}.exr", id(), current.spp_done);
+  std::string previous;
+  try {
+    const auto fingerprint = envmap_fingerprint(*envmap_);
+    store_->write_bytes(store_->renders_dir() / file, write_exr(*current.image, ExrCompression::None));
+    std::lock_guard lock(mutex_);
+    previous = std::exchange(image_file_, file);
+    envmap_fingerprint_ = fingerprint;
+  } catch (const std::exception& e) {
+    spdlog::error("render {}: cannot save its image: {}", id(), e.what());
+    return;
+  }
+  save_record();
+  if (!previous.empty() && previous != file) store_->remove(store_->renders_dir() / previous);
+}
+
+// Drops the passes an earlier run finished; returns the samples per pixel they hold.
+int RenderJob::skip_done_passes(std::vector<int>& passes) const {
+  const int done = spp_done();
+  int sum = 0;
+  size_t skipped = 0;
+  while (skipped < passes.size() && sum < done) sum += passes[skipped++];
+  if (sum != done)
+    throw std::runtime_error(fmt::format("{} samples per pixel done is not the end of a pass", done));
+  passes.erase(passes.begin(), passes.begin() + std::ptrdiff_t(skipped));
+  return done;
 }
 
 bool RenderJob::run() {
   using Clock = std::chrono::steady_clock;
   const auto& s = request_.settings;
-  spdlog::info("render {} started: {}x{}, {} spp, depth {}, envmap '{}', {}, lighting {}", id(), s.width, s.height,
-               s.spp, s.max_depth, request_.envmap,
-               request_.preset ? "preset " + *request_.preset : std::to_string(request_.scene.objects.size()) + " objects",
+  spdlog::info("render {} started: {}x{}, {} spp, depth {}, envmap '{}', {}, lighting {}", id(), s.width,
+               s.height, s.spp, s.max_depth, request_.envmap,
+               request_.preset ? "preset " + *request_.preset
+                               : std::to_string(request_.scene.objects.size()) + " objects",
                api::lighting_mode_name(request_.lighting.mode));
   auto release = [this](const char* how) {
     envmap_.reset();
@@ -59,16 +153,24 @@ bool RenderJob::run() {
   };
   try {
     render::Renderer renderer(request_.scene, request_.lighting, s, envmap_);
-    const auto passes = pass_schedule(s.spp);
+    auto passes = pass_schedule(s.spp);
+    const int earlier_spp = skip_done_passes(passes);
+    if (earlier_spp > 0) {
+      renderer.resume(*image().image, earlier_spp);
+      spdlog::info("render {} continues after {} spp", id(), earlier_spp);
+    }
     const int64_t tiles = renderer.tile_count();
-    set_work_total(tiles * s.spp);
+    set_work(tiles * s.spp, tiles * earlier_spp);
+    save_record();
     const auto start = Clock::now();
     for (const int pass : passes) {
-      if (!renderer.render_pass(pass, cancel_flag(), [this, pass] { add_work_done(pass); })) {
-        release("cancelled");
+      if (interrupt_requested() ||
+          !renderer.render_pass(pass, cancel_flag(), [this, pass] { add_work_done(pass); })) {
+        release(interrupt_requested() ? "interrupted" : "cancelled");
         return false;
       }
       publish(renderer, std::chrono::duration<double>(Clock::now() - start).count());
+      checkpoint();
     }
   } catch (const std::exception& e) {
     release("failed");

@@ -1,7 +1,8 @@
 #pragma once
 // A render as a background job: builds the renderer, then renders progressive passes (1, 1, 2, 4, ...
 // samples per pixel, capped) so a valid image exists after the first pass. Progress counts pixel samples
-// per finished tile; the image and the statistics are published after every pass.
+// per finished tile; the image and the statistics are published after every pass, and with a state
+// store the job keeps its record and image there after every pass, so a restart can continue it.
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -11,6 +12,8 @@
 #include "engine/image/image.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/job.hpp"
+#include "server/render_record.hpp"
+#include "server/state_store.hpp"
 
 namespace lp::server {
 
@@ -25,28 +28,50 @@ struct RenderImage {
 
 class RenderJob : public Job {
  public:
-  RenderJob(std::string id, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap);
+  // `record` is a fresh one for a new render, or the record of an earlier run to continue (then `image`
+  // is its mean image over record.spp_done samples per pixel). `envmap` may be null for a job that has
+  // ended; `store` null keeps nothing.
+  RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
+            std::shared_ptr<const Image> image, StateStore* store);
 
   RenderImage image() const;
   int spp_done() const;
   const api::RenderRequest& request() const { return request_; }
+  RenderRecord record() const;
+  RenderRecord record(JobStatus status, const std::optional<JobError>& error) const;
   int64_t retained_bytes() const override;
+
+  void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
+  void save_record(JobStatus status, const std::optional<JobError>& error) const;
+  void delete_state() const;  // removes the record and the image from the store, for good
 
  protected:
   bool run() override;
   void describe(nlohmann::json& out) const override;
+  void ending(JobStatus status, const std::optional<JobError>& error) override { save_record(status, error); }
+  void forgotten() override { delete_state(); }
 
  private:
   void publish(const render::Renderer& renderer, double render_s);
+  void checkpoint();  // the image of the passes done, then the record naming it
+  int skip_done_passes(std::vector<int>& passes) const;
 
   const api::RenderRequest request_;
+  const nlohmann::json request_json_;
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
+  StateStore* const store_;
+  const render::RenderStats earlier_stats_;  // of earlier runs
+  const double earlier_render_s_;
 
   mutable std::mutex mutex_;
   std::shared_ptr<const Image> image_;
   int spp_done_ = 0;
   render::RenderStats stats_;
   double render_s_ = 0;  // time spent in passes (not building the scene), for the rates
+  std::string image_file_, envmap_fingerprint_;
+
+  mutable std::mutex store_mutex_;  // one write at a time; none after delete_state()
+  mutable bool deleted_ = false;
 };
 
 }  // namespace lp::server

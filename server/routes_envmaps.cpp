@@ -5,6 +5,7 @@
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
 #include "server/routes.hpp"
+#include "server/stored_maps.hpp"
 
 namespace lp::server {
 namespace {
@@ -42,7 +43,10 @@ std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Req
 }
 
 void create(App& app, const httplib::Request& req, httplib::Response& res) {
-  const auto entry = is_json_body(req) ? load_from_json(app, req) : load_from_upload(app, req);
+  const bool by_path = is_json_body(req);
+  const auto entry = by_path ? load_from_json(app, req) : load_from_upload(app, req);
+  const auto* body = reinterpret_cast<const uint8_t*>(req.body.data());
+  keep_map(app, entry, by_path ? std::span<const uint8_t>() : std::span(body, req.body.size()));
   res.set_header("Location", "/api/v1/envmaps/" + entry->id);
   send_json(res, metadata(*entry), 201);
 }
@@ -75,7 +79,7 @@ void register_envmap_routes(Router& router, App& app) {
   });
   router.del("/api/v1/envmaps/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     const std::string id = path_param(req, 1);
-    if (!app.envmaps.remove(id)) throw api::not_found("no environment map with id '" + id + "'");
+    if (!remove_map(app, id)) throw api::not_found("no environment map with id '" + id + "'");
     res.status = 204;
   });
   router.get("/api/v1/envmaps/{id}/image",

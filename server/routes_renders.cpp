@@ -1,32 +1,24 @@
 // Render jobs: POST /api/v1/renders queues a render; status, image (the current pass while running),
-// server-sent progress events, cancel / remove, and the list of jobs.
+// server-sent progress events, cancel / remove, resume (an interrupted render), and the list of jobs.
+#include <fmt/format.h>
+
 #include <atomic>
 #include <chrono>
 #include <memory>
-#include <variant>
-
-#include <fmt/format.h>
 
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
-#include "engine/core/error.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/render/mesh_loader.hpp"
-#include "server/data_dir.hpp"
 #include "server/render_job.hpp"
+#include "server/render_requests.hpp"
 #include "server/routes.hpp"
+#include "server/stored_renders.hpp"
 
 namespace lp::server {
 namespace {
 
 using namespace std::chrono_literals;
-
-api::RenderLimits render_limits(const Options& o) {
-  return {o.max_render_width, o.max_render_height,   o.max_render_spp,
-          o.max_render_depth, o.max_render_objects,  int(std::min<int64_t>(o.max_lights, 1 << 30)),
-          o.max_mesh_triangles};
-}
 
 std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   auto job = std::dynamic_pointer_cast<RenderJob>(app.renders.find(id));
@@ -34,44 +26,42 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-// Mesh paths are relative to --data-dir and must stay inside it, and the files must pass the OBJ pre-scan.
-// Every problem is a 400 naming the field.
-void resolve_meshes(render::SceneDesc& scene, const Options& options, const render::MeshLimits& limits) {
-  for (size_t i = 0; i < scene.objects.size(); ++i) {
-    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
-    if (!mesh) continue;
-    const std::string field = fmt::format("scene.objects[{}].path", i);
-    const std::string relative = mesh->path.string();
-    try {
-      mesh->path = resolve_in_data_dir(options, relative, field);
-    } catch (const api::ApiError& e) {
-      if (e.status() != 404) throw;
-      throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
-    }
-    try {
-      render::check_obj_file(mesh->path, limits);
-    } catch (const Error& e) {
-      throw api::invalid_field(field, e.what());
-    }
-  }
+void send_queue_full(const App& app, httplib::Response& res) {
+  res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
+  send_error(res, 503, "queue_full",
+             fmt::format("{} renders are running and {} queued (the limit); retry later",
+                         app.renders.running_count(), app.renders.queued_count()));
+}
+
+void send_accepted(const RenderJob& job, const nlohmann::json& body, httplib::Response& res) {
+  res.set_header("Location", "/api/v1/renders/" + job.id());
+  send_json(res, body, 202);
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
-  auto request = api::parse_render_request(api::parse_json_object(req.body), render_limits(app.options));
+  RenderRecord record;
+  record.id = app.renders.new_id();
+  record.request = api::parse_json_object(req.body);
+  auto request = api::parse_render_request(record.request, render_limits(app.options));
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap) throw api::invalid_field("envmap", "no environment map '" + request.envmap + "' is loaded");
-  resolve_meshes(request.scene, app.options, request.settings.mesh_limits);
-  auto job = std::make_shared<RenderJob>(app.renders.new_id(), std::move(request), envmap->map);
+  resolve_meshes(request.scene, app.options);
+  auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
+                                         app.state.get());
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
+  job->save_record();
   if (!app.renders.submit(job)) {
-    res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
-    send_error(res, 503, "queue_full",
-               fmt::format("{} renders are running and {} queued (the limit); retry later", app.renders.running_count(),
-                           app.renders.queued_count()));
+    job->delete_state();
+    send_queue_full(app, res);
     return;
   }
-  res.set_header("Location", "/api/v1/renders/" + job->id());
-  send_json(res, body, 202);
+  send_accepted(*job, body, res);
+}
+
+void resume(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = resume_render(app, find_render(app, path_param(req, 1)));
+  if (!job) return send_queue_full(app, res);
+  send_accepted(*job, job->status_json(), res);
 }
 
 void list(const App& app, httplib::Response& res) {
@@ -89,8 +79,9 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   const auto params = api::parse_preview_params(req.params);
   const RenderImage current = job->image();
   if (!current.image)
-    throw api::ApiError(409, "no_image_yet",
-                        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
+    throw api::ApiError(
+        409, "no_image_yet",
+        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
   const auto bytes = write_image(*current.image, params.format, params.tone);
   res.set_header("Cache-Control", "no-store");
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
@@ -100,19 +91,23 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
   switch (app.renders.cancel_or_remove(job->id())) {
-    case JobManager::CancelOutcome::NotFound: throw api::not_found("no render job '" + job->id() + "'");
-    case JobManager::CancelOutcome::Removed: res.status = 204; return;
-    default: send_json(res, job->status_json(), 202);
+    case JobManager::CancelOutcome::NotFound:
+      throw api::not_found("no render job '" + job->id() + "'");
+    case JobManager::CancelOutcome::Removed:
+      res.status = 204;
+      return;
+    default:
+      send_json(res, job->status_json(), 202);
   }
 }
 
 // One slot of the bounded number of event streams; released when the response (and its provider) goes.
 class StreamSlot {
  public:
-  StreamSlot(std::shared_ptr<std::atomic<int>> count, int max) : count_(std::move(count)) {
+  StreamSlot(std::atomic<int>& count, int max) : count_(&count) {
     if (count_->fetch_add(1) >= max) {
       count_->fetch_sub(1);
-      count_.reset();
+      count_ = nullptr;
     }
   }
   ~StreamSlot() {
@@ -123,7 +118,7 @@ class StreamSlot {
   bool acquired() const { return count_ != nullptr; }
 
  private:
-  std::shared_ptr<std::atomic<int>> count_;
+  std::atomic<int>* count_;
 };
 
 struct EventStream {
@@ -134,7 +129,9 @@ struct EventStream {
   bool first = true;
 };
 
-bool write_text(httplib::DataSink& sink, const std::string& text) { return sink.write(text.data(), text.size()); }
+bool write_text(httplib::DataSink& sink, const std::string& text) {
+  return sink.write(text.data(), text.size());
+}
 
 // Called by httplib again and again until it returns false or calls sink.done(). Each call waits up to
 // 250 ms for the job to end, then sends a progress event if the status changed (or a comment every 2 s
@@ -151,19 +148,20 @@ bool next_event(EventStream& s, httplib::DataSink& sink) {
   }
   const auto now = std::chrono::steady_clock::now();
   std::string text;
-  if (data != s.last_data) text = "event: progress\ndata: " + data + "\n\n";
-  else if (now - s.last_write > 2s) text = ": waiting\n\n";
+  if (data != s.last_data)
+    text = "event: progress\ndata: " + data + "\n\n";
+  else if (now - s.last_write > 2s)
+    text = ": waiting\n\n";
   if (text.empty()) return true;
   s.last_data = data;
   s.last_write = now;
   return write_text(sink, text);
 }
 
-void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, const httplib::Request& req,
-            httplib::Response& res) {
+void events(App& app, const httplib::Request& req, httplib::Response& res) {
   auto state = std::make_shared<EventStream>();
   state->job = find_render(app, path_param(req, 1));
-  state->slot = std::make_unique<StreamSlot>(streams, app.options.max_event_streams);
+  state->slot = std::make_unique<StreamSlot>(app.event_streams, app.options.max_event_streams);
   if (!state->slot->acquired()) {
     res.set_header("Retry-After", "5");
     send_error(res, 503, "too_many_streams",
@@ -172,25 +170,27 @@ void events(const App& app, const std::shared_ptr<std::atomic<int>>& streams, co
     return;
   }
   res.set_header("Cache-Control", "no-store");
-  res.set_chunked_content_provider("text/event-stream",
-                                   [state](size_t, httplib::DataSink& sink) { return next_event(*state, sink); });
+  res.set_chunked_content_provider(
+      "text/event-stream", [state](size_t, httplib::DataSink& sink) { return next_event(*state, sink); });
 }
 
 }  // namespace
 
 void register_render_routes(Router& router, App& app) {
-  auto streams = std::make_shared<std::atomic<int>>(0);
-  router.post("/api/v1/renders", [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
+  router.post("/api/v1/renders",
+              [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
   router.get("/api/v1/renders", [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
   router.get("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, find_render(app, path_param(req, 1))->status_json());
   });
   router.get("/api/v1/renders/{id}/image",
              [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
-  router.get("/api/v1/renders/{id}/events", [&app, streams](const httplib::Request& req, httplib::Response& res) {
-    events(app, streams, req, res);
-  });
-  router.del("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
+  router.get("/api/v1/renders/{id}/events",
+             [&app](const httplib::Request& req, httplib::Response& res) { events(app, req, res); });
+  router.post("/api/v1/renders/{id}/resume",
+              [&app](const httplib::Request& req, httplib::Response& res) { resume(app, req, res); });
+  router.del("/api/v1/renders/{id}",
+             [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
 }
 
 }  // namespace lp::server

@@ -1,7 +1,9 @@
 #include "server/server.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
@@ -32,9 +34,12 @@ Server::Server(App& app) : app_(app), router_(http_) {
   http_.set_keep_alive_max_count(1000);
 
   // A request is handled start to end on one worker thread, so its start time can live there.
-  http_.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+  http_.set_pre_routing_handler([this](const httplib::Request&, httplib::Response& res) {
     request_start = Clock::now();
-    return httplib::Server::HandlerResponse::Unhandled;
+    if (accepting_.load()) return httplib::Server::HandlerResponse::Unhandled;
+    res.set_header("Connection", "close");
+    send_error(res, 503, "shutting_down", "the server is shutting down");
+    return httplib::Server::HandlerResponse::Handled;
   });
   http_.set_logger([](const httplib::Request& req, const httplib::Response& res) {
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - request_start).count();
@@ -81,14 +86,19 @@ void Server::mount_web_dir(const std::filesystem::path& dir) {
 
 int Server::bind() {
   const auto& o = app_.options;
-  mount_web_dir(o.web_dir);
+  errno = 0;
   const int port = o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
-  if (port <= 0) throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port));
+  if (port <= 0)
+    throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port) +
+                             (errno ? std::string(": ") + std::strerror(errno) : std::string()));
+  mount_web_dir(o.web_dir);  // after the bind, so a port in use gives one message only
   return port;
 }
 
 void Server::run() { http_.listen_after_bind(); }
 
-void Server::stop() { http_.stop(); }
+void Server::stop_accepting() { accepting_.store(false); }
+
+void Server::close_connections() { http_.stop(); }
 
 }  // namespace lp::server

@@ -1,9 +1,10 @@
 #pragma once
 // The HTTP server: routes, limits, request logging, graceful stop.
+#include <httplib.h>
+
+#include <atomic>
 #include <filesystem>
 #include <memory>
-
-#include <httplib.h>
 
 #include "server/app.hpp"
 #include "server/router.hpp"
@@ -16,8 +17,13 @@ class Server {
 
   // Binds (port 0 = any free port) and returns the port; throws std::runtime_error if it cannot.
   int bind();
-  void run();   // blocks until stop()
-  void stop();  // safe from a signal-watching thread
+  void run();  // blocks until close_connections() (and the connections it closes) are done
+
+  // Stopping, in two steps (the sequence is in shutdown.hpp); both are safe from any thread.
+  // New requests are refused (503 "shutting_down", connection closed); requests in flight go on.
+  void stop_accepting();
+  // Closes the listening socket and every connection; run() returns once their workers are done.
+  void close_connections();
 
   const Router& router() const { return router_; }
 
@@ -27,6 +33,7 @@ class Server {
   App& app_;
   httplib::Server http_;
   Router router_;
+  std::atomic<bool> accepting_{true};
 };
 
 }  // namespace lp::server

@@ -105,10 +105,10 @@ Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   }
 }
 
-std::vector<uint8_t> write_exr(const Image& image) {
+std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression) {
   enable_exr_threads();
   Imf::Header header(image.width(), image.height());
-  header.compression() = Imf::ZIP_COMPRESSION;
+  header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   MemoryOStream stream;
   {

@@ -47,7 +47,8 @@ struct ToneMap {
   std::optional<float> gamma;
 };
 
-std::vector<uint8_t> write_exr(const Image& image);  // 32-bit float RGB, ZIP compression
+enum class ExrCompression { Zip, None };  // None: several times faster to write, for noisy images
+std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression = ExrCompression::Zip);  // float RGB
 std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
 std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
 std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB

@@ -1,5 +1,7 @@
 #include "engine/render/film.hpp"
 
+#include "engine/core/error.hpp"
+
 namespace lp::render {
 
 Film::Film(int width, int height)
@@ -9,6 +11,15 @@ void Film::merge_pass(int spp) {
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
   spp_ += spp;
+}
+
+void Film::restore(const Image& mean, int spp) {
+  if (mean.width() != width_ || mean.height() != height_ || spp < 0)
+    throw Error(ErrorKind::InvalidArgument, "film: the restored image does not match the render's size");
+  const auto in = mean.data();
+  std::lock_guard lock(mutex_);
+  for (size_t i = 0; i < total_.size(); ++i) total_[i] = double(in[i]) * spp;
+  spp_ = spp;
 }
 
 int Film::spp() const {

@@ -23,6 +23,8 @@ class Film {
   }
   // Adds the staged pass (of `spp` samples per pixel) to the totals.
   void merge_pass(int spp);
+  // Replaces the totals with those of an earlier run: its mean image over `spp` samples per pixel.
+  void restore(const Image& mean, int spp);
 
   int spp() const;
   Image mean() const;

@@ -143,6 +143,8 @@ bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::
   return true;
 }
 
+void Renderer::resume(const Image& mean, int spp) { impl_->film.restore(mean, spp); }
+
 int Renderer::spp_done() const { return impl_->film.spp(); }
 
 Image Renderer::image() const { return impl_->film.mean(); }

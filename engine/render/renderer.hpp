@@ -34,6 +34,10 @@ class Renderer {
   // (the pass is then incomplete and not added to the image).
   bool render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
 
+  // Continues an earlier run of the same scene and settings from its mean image over `spp` samples
+  // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.
+  void resume(const Image& mean, int spp);
+
   int spp_done() const;
   Image image() const;  // mean of the finished passes (linear radiance)
   RenderStats stats() const;

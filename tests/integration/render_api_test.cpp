@@ -1,7 +1,7 @@
 // Render jobs on the real server: submit, poll to done, images decode (and a furnace render matches its
 // analytic value), image while running, cancel mid-render, server-sent events, a full queue (503 with
 // Retry-After), bounded finished jobs, bad fields (400 naming the field), mesh paths outside the data dir,
-// other requests answering while renders run, and SIGTERM with a render running.
+// other requests answering while renders run, and SIGTERM with a render running (interrupted).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -484,17 +484,17 @@ TEST(RenderQueue, FinishedJobsAreBoundedAndTheOldestDropped) {
   EXPECT_EQ(listed, (std::vector<std::string>{ids[1], ids[2]}));
 }
 
-TEST(RenderShutdown, SigtermCancelsARunningRenderAndTheServerExits) {
+TEST(RenderShutdown, SigtermInterruptsARunningRenderAndTheServerExits) {
   std::string log_path, id;
   {
-    test::ServerProcess s;
+    test::ServerProcess s({"--shutdown-grace-s", "1"});
     log_path = s.log_path();
     id = submit(s, render_body("default", 512, 512, 4096));
     poll(s, id, [](const json& st) { return st["status"] == "running"; });
   }  // SIGTERM; the destructor waits up to 5 s before it would SIGKILL
   std::ifstream in(log_path);
   const std::string log{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  EXPECT_NE(log.find("render " + id + " cancelled"), std::string::npos) << log;
+  EXPECT_NE(log.find("render " + id + " interrupted"), std::string::npos) << log;
   EXPECT_NE(log.find("stopped"), std::string::npos) << log;
 }
 

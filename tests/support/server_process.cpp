@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <gtest/gtest.h>
+
 #include "support/test_data.hpp"
 
 namespace lp::test {
@@ -35,13 +37,12 @@ int wait_for_port(const std::string& log_path, int pid) {
   throw std::runtime_error("server did not report its port within 60 s; log: " + log_path);
 }
 
-}  // namespace
-
-ServerProcess::ServerProcess(const std::vector<std::string>& args) {
+// Starts the server with its output to a new log file; returns the pid and sets `log_path`.
+int spawn(const std::vector<std::string>& args, std::string& log_path) {
   char tmpl[] = "/tmp/lightprobe-server-XXXXXX.log";
   const int fd = mkstemps(tmpl, 4);
   if (fd < 0) throw std::runtime_error("mkstemps failed");
-  log_path_ = tmpl;
+  log_path = tmpl;
 
   std::vector<std::string> argv_strings = {LIGHTPROBE_SERVER_BIN, "--host", "127.0.0.1", "--port", "0"};
   argv_strings.insert(argv_strings.end(), args.begin(), args.end());
@@ -49,27 +50,104 @@ ServerProcess::ServerProcess(const std::vector<std::string>& args) {
   for (auto& s : argv_strings) argv.push_back(s.data());
   argv.push_back(nullptr);
 
-  pid_ = fork();
-  if (pid_ < 0) throw std::runtime_error("fork failed");
-  if (pid_ == 0) {
+  const int pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
     execv(argv[0], argv.data());
     _exit(127);
   }
   close(fd);
+  return pid;
+}
+
+int decode_status(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status); }
+
+std::optional<int> wait_for_exit(int pid, std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  do {
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return decode_status(status);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  } while (std::chrono::steady_clock::now() < deadline);
+  return std::nullopt;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool names_state_dir(const std::vector<std::string>& args) {
+  return std::find(args.begin(), args.end(), "--state-dir") != args.end();
+}
+
+std::filesystem::path make_temp_dir() {
+  char tmpl[] = "/tmp/lightprobe-state-XXXXXX";
+  if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
+  return tmpl;
+}
+
+}  // namespace
+
+ServerProcess::ServerProcess(const std::vector<std::string>& args) {
+  std::vector<std::string> all = args;
+  if (!names_state_dir(args)) {
+    own_state_dir_ = make_temp_dir();
+    all.insert(all.end(), {"--state-dir", own_state_dir_.string()});
+  }
+  pid_ = spawn(all, log_path_);
   port_ = wait_for_port(log_path_, pid_);
 }
 
 ServerProcess::~ServerProcess() {
-  if (pid_ <= 0) return;
-  kill(pid_, SIGTERM);
-  for (int i = 0; i < 200; ++i) {
-    if (waitpid(pid_, nullptr, WNOHANG) == pid_) return;
-    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  if (pid_ > 0) {
+    kill(pid_, SIGTERM);
+    if (!wait_for_exit(pid_, std::chrono::seconds(5))) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
   }
-  kill(pid_, SIGKILL);
-  waitpid(pid_, nullptr, 0);
+  std::error_code ec;
+  if (!own_state_dir_.empty()) std::filesystem::remove_all(own_state_dir_, ec);
+}
+
+std::string ServerProcess::log() const { return read_text(log_path_); }
+
+void ServerProcess::send_signal(int signal) const {
+  if (pid_ > 0) kill(pid_, signal);
+}
+
+std::optional<int> ServerProcess::wait_exit(std::chrono::milliseconds timeout) {
+  if (pid_ <= 0) return std::nullopt;
+  const auto status = wait_for_exit(pid_, timeout);
+  if (status) pid_ = -1;
+  return status;
+}
+
+StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout) {
+  std::string log_path;
+  const auto start = std::chrono::steady_clock::now();
+  const int pid = spawn(args, log_path);
+  StartFailure result;
+  const auto status = wait_for_exit(pid, timeout);
+  result.elapsed = std::chrono::steady_clock::now() - start;
+  if (!status) {
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    ADD_FAILURE() << "the server was still running after " << timeout.count() << " ms";
+  }
+  result.exit_status = status.value_or(-SIGKILL);
+  result.output = read_text(log_path);
+  return result;
+}
+
+TempDir::TempDir() : path_(make_temp_dir()) {}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
 }
 
 std::unique_ptr<httplib::Client> ServerProcess::client() const {

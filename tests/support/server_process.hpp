@@ -1,7 +1,11 @@
 #pragma once
 // Starts the real lightprobe-server binary on a free loopback port (--port 0; the port is read
-// from the line the server prints on start) and stops it at the end of the test.
+// from the line the server prints on start) and stops it at the end of the test. Unless the flags name a
+// --state-dir, each server gets a fresh one of its own, removed at the end.
+#include <chrono>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,11 +28,40 @@ class ServerProcess {
   bool alive() const;  // the process has not exited
   int pid() const { return pid_; }
   const std::string& log_path() const { return log_path_; }
+  std::string log() const;  // the server's output so far
+
+  void send_signal(int signal) const;
+  // Waits for the process to exit: its exit status, or -N if signal N ended it; nullopt if it is still
+  // running after `timeout`. After it, the destructor has nothing left to stop.
+  std::optional<int> wait_exit(std::chrono::milliseconds timeout);
 
  private:
   int pid_ = -1;
   int port_ = 0;
   std::string log_path_;
+  std::filesystem::path own_state_dir_;
+};
+
+// A server run that is expected to fail at start: its exit status (or -N for signal N), how long it
+// took, and its output. Fails the test if it is still running after `timeout` (then killed).
+struct StartFailure {
+  int exit_status = 0;
+  std::chrono::duration<double> elapsed{};
+  std::string output;
+};
+StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout);
+
+// A fresh, empty temporary directory, removed with everything in it at the end.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
 };
 
 // A server shared by all tests of a test binary that need no special flags (started on first use,

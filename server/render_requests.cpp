@@ -1,0 +1,43 @@
+#include "server/render_requests.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <variant>
+
+#include "api/api_error.hpp"
+#include "engine/core/error.hpp"
+#include "engine/render/mesh_loader.hpp"
+#include "server/data_dir.hpp"
+
+namespace lp::server {
+
+api::RenderLimits render_limits(const Options& o) {
+  return {o.max_render_width,  o.max_render_height,  o.max_render_spp,
+          o.max_render_depth,  o.max_render_objects, int(std::min<int64_t>(o.max_lights, 1 << 30)),
+          o.max_mesh_triangles};
+}
+
+void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+  render::MeshLimits limits;
+  limits.max_triangles = options.max_mesh_triangles;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
+    if (!mesh) continue;
+    const std::string field = fmt::format("scene.objects[{}].path", i);
+    const std::string relative = mesh->path.string();
+    try {
+      mesh->path = resolve_in_data_dir(options, relative, field);
+    } catch (const api::ApiError& e) {
+      if (e.status() != 404) throw;
+      throw api::invalid_field(field, "no file '" + relative + "' in the data directory");
+    }
+    try {
+      render::check_obj_file(mesh->path, limits);
+    } catch (const Error& e) {
+      throw api::invalid_field(field, e.what());
+    }
+  }
+}
+
+}  // namespace lp::server

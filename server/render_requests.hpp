@@ -1,0 +1,17 @@
+#pragma once
+// Turning a render request body into the renderer's input under the server's limits: shared by new
+// renders and by renders continued after a restart.
+#include <nlohmann/json.hpp>
+
+#include "api/render_request.hpp"
+#include "server/options.hpp"
+
+namespace lp::server {
+
+api::RenderLimits render_limits(const Options& options);
+
+// Mesh paths are relative to --data-dir and must stay inside it, and the files must pass the OBJ
+// pre-scan (engine/render/obj_prescan.hpp). Every problem is a 400 naming the field.
+void resolve_meshes(render::SceneDesc& scene, const Options& options);
+
+}  // namespace lp::server
