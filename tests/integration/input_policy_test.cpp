@@ -13,7 +13,6 @@
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
-#include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {

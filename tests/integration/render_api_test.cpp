@@ -22,7 +22,6 @@
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
-#include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
@@ -35,7 +34,7 @@ using namespace std::chrono_literals;
 // A data directory for the tests: meshes/bunny.obj (a copy) and escape.obj, a link to a file outside it.
 class TempDataDir {
  public:
-  TempDataDir() : dir_("lightprobe-render-data") {
+  TempDataDir() {
     fs::create_directories(path() / "meshes");
     fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path() / "meshes" / "bunny.obj");
     fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path() / "escape.obj");
