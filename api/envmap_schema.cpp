@@ -18,7 +18,9 @@ Json envmap_metadata(const EnvMapInfo& info, const EnvMap& map) {
           {"mean_radiance", rgb_json(map.mean_radiance())},
           {"max_luminance", map.max_luminance(LuminanceMode::Average)},
           {"power", rgb_json(map.power())},
-          {"clamped_negative_values", map.clamped_negatives()},
+          {"clamped_negative_values", map.invalid_pixels().clamped_negative_values},
+          {"most_negative_value", map.invalid_pixels().most_negative_value},
+          {"non_finite_pixels", map.invalid_pixels().non_finite_pixels},
           {"created", fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", std::chrono::floor<std::chrono::seconds>(info.created))}};
 }
 

@@ -19,14 +19,16 @@ void check_new_name(const App& app, const std::string& name) {
 }
 
 std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& name, DecodedImage decoded,
-                                                  const std::string& format, const std::string& source) {
+                                                  const std::string& format, const std::string& source,
+                                                  InvalidPixelPolicy policy) {
   const auto start = std::chrono::steady_clock::now();
-  auto map = std::make_shared<const EnvMap>(std::move(decoded.image), decoded.clamped_negatives);
+  auto map = std::make_shared<const EnvMap>(std::move(decoded.image), policy);
   map->sampler(LuminanceMode::Average);  // precompute the default distribution once, now
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   auto entry = app.envmaps.add(name, format, source, std::move(map));
-  if (const size_t n = entry->map->clamped_negatives())
-    spdlog::warn("map '{}': clamped {} tiny negative values (lossy-codec noise) to zero", name, n);
+  if (const auto& fixed = entry->map->invalid_pixels(); fixed.clamped_negative_values || fixed.non_finite_pixels)
+    spdlog::warn("map '{}': clamped {} negative values (lowest {}) to zero and set {} non-finite pixels to black", name,
+                 fixed.clamped_negative_values, fixed.most_negative_value, fixed.non_finite_pixels);
   spdlog::info("loaded map '{}' ({}x{} {}, from {}) in {:.1f} ms", name, entry->map->width(), entry->map->height(),
                entry->format, source, ms);
   return entry;
@@ -41,21 +43,23 @@ ImageLimits image_limits(const Options& options) {
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name, std::span<const uint8_t> bytes,
-                                                         const std::string& source) {
+                                                         const std::string& source, InvalidPixelPolicy policy) {
   check_new_name(app, name);
   DecodedImage decoded = read_image(bytes, image_limits(app.options));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source);
+  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy);
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::string& name,
-                                                        const std::filesystem::path& path, const std::string& source) {
+                                                        const std::filesystem::path& path, const std::string& source,
+                                                        InvalidPixelPolicy policy) {
   check_new_name(app, name);
   DecodedImage decoded = read_image_file(path, image_limits(app.options));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source);
+  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy);
 }
 
 void register_default_envmap(App& app) {
-  register_image(app, "default", {make_procedural_sky(), ImageFormat::Exr, 0}, "procedural", "procedural");
+  register_image(app, "default", {make_procedural_sky(), ImageFormat::Exr}, "procedural", "procedural",
+                 InvalidPixelPolicy::Reject);
 }
 
 }  // namespace lp::server

@@ -6,6 +6,8 @@
 #include <variant>
 
 #include "api/api_error.hpp"
+#include "engine/core/error.hpp"
+#include "engine/render/mesh_loader.hpp"
 #include "server/data_dir.hpp"
 
 namespace lp::server {
@@ -17,6 +19,8 @@ api::RenderLimits render_limits(const Options& o) {
 }
 
 void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+  render::MeshLimits limits;
+  limits.max_triangles = options.max_mesh_triangles;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;
@@ -27,6 +31,11 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
     } catch (const api::ApiError& e) {
       if (e.status() != 404) throw;
       throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
+    }
+    try {
+      render::check_obj_file(mesh->path, limits);
+    } catch (const Error& e) {
+      throw api::invalid_field(field, e.what());
     }
   }
 }

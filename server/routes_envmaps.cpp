@@ -15,6 +15,12 @@ api::Json metadata(const EnvMapEntry& e) {
   return api::envmap_metadata({e.id, e.name, e.format, e.source, e.created}, *e.map);
 }
 
+InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
+  return *parse_invalid_pixel_policy(api::query_enum(req.params, "invalid",
+                                                     invalid_pixel_policy_name(kDefaultInvalidPixelPolicy),
+                                                     invalid_pixel_policy_names()));
+}
+
 bool is_json_body(const httplib::Request& req) {
   const std::string type = req.get_header_value("Content-Type");
   return type.rfind("application/json", 0) == 0 || (!req.body.empty() && req.body.front() == '{');
@@ -23,7 +29,7 @@ bool is_json_body(const httplib::Request& req) {
 std::shared_ptr<const EnvMapEntry> load_from_json(App& app, const httplib::Request& req) {
   const api::EnvMapLoadRequest r = api::parse_envmap_load_request(req.body);
   const auto path = resolve_in_data_dir(app.options, r.path, "path");
-  return register_envmap_file(app, r.name, path, "path:" + r.path);
+  return register_envmap_file(app, r.name, path, "path:" + r.path, invalid_pixel_policy(req));
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Request& req) {
@@ -32,7 +38,7 @@ std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Req
   if (req.body.empty())
     throw api::ApiError(400, "empty_body", "the request body is empty: send an EXR, PFM or HDR file");
   const auto* bytes = reinterpret_cast<const uint8_t*>(req.body.data());
-  return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload");
+  return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload", invalid_pixel_policy(req));
 }
 
 void create(App& app, const httplib::Request& req, httplib::Response& res) {

@@ -5,7 +5,6 @@
 
 #include "engine/core/error.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
-#include "engine/image/image_io.hpp"
 
 namespace lp {
 namespace {
@@ -35,9 +34,9 @@ Rgb compute_power(const Image& image) {
 
 }  // namespace
 
-EnvMap::EnvMap(Image image, size_t clamped_on_decode) : image_(std::move(image)) {
+EnvMap::EnvMap(Image image, InvalidPixelPolicy policy) : image_(std::move(image)) {
   if (image_.empty()) throw Error(ErrorKind::InvalidData, "environment map is empty");
-  clamped_negatives_ = clamped_on_decode + sanitize_radiance(image_);
+  invalid_pixels_ = sanitize_radiance(image_, policy);
   power_ = compute_power(image_);
 }
 

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <string>
 
+#include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/latlong.hpp"
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image.hpp"
@@ -18,9 +19,9 @@ class EnvMapSampler;
 
 class EnvMap {
  public:
-  // Validates the radiance (finite, non-negative, see sanitize_radiance); throws lp::Error.
-  // `clamped_on_decode`: negatives the reader already clamped (DecodedImage::clamped_negatives).
-  explicit EnvMap(Image image, size_t clamped_on_decode = 0);
+  // Applies the invalid-pixel policy (see invalid_pixels.hpp); every derived quantity uses the result.
+  // Throws lp::Error(InvalidData) for an empty map or, under Reject, a bad pixel.
+  explicit EnvMap(Image image, InvalidPixelPolicy policy = kDefaultInvalidPixelPolicy);
 
   const Image& image() const { return image_; }
   int width() const { return image_.width(); }
@@ -28,8 +29,8 @@ class EnvMap {
 
   // Integral of radiance over the sphere: sum of L * pixel solid angle (exact per-row solid angle).
   Rgb power() const { return power_; }
-  // How many tiny negative values (lossy-codec noise) were clamped to zero on load.
-  size_t clamped_negatives() const { return clamped_negatives_; }
+  // What the policy changed on load.
+  const InvalidPixelReport& invalid_pixels() const { return invalid_pixels_; }
   // Solid-angle-weighted mean radiance: power / (4 pi).
   Rgb mean_radiance() const;
   float max_luminance(LuminanceMode mode) const;
@@ -58,7 +59,7 @@ class EnvMap {
 
   Image image_;
   Rgb power_;
-  size_t clamped_negatives_ = 0;
+  InvalidPixelReport invalid_pixels_;
   mutable std::mutex cache_mutex_;
   mutable std::map<std::string, std::shared_ptr<Slot>> cache_;
 };

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <thread>
 
+#include "engine/image/exr_capacity.hpp"
 #include "engine/image/image_limits.hpp"
 
 namespace lp {
@@ -70,21 +71,26 @@ std::array<const char*, 3> pick_channels(const Imf::ChannelList& channels) {
 Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   enable_exr_threads();
   try {
+    const ExrHeaderSummary checked = check_exr_capacity(bytes, limits);
     MemoryIStream stream(bytes);
     Imf::InputFile file(stream);
     const Imath::Box2i window = file.header().dataWindow();
+    if (window.min.x != checked.min_x || window.min.y != checked.min_y || window.max.x != checked.max_x ||
+        window.max.y != checked.max_y || int(file.header().compression()) != checked.compression)
+      throw Error(ErrorKind::Corrupt, "cannot read OpenEXR data: the header reads differently on a second pass");
     const int64_t width = int64_t{window.max.x} - window.min.x + 1;
     const int64_t height = int64_t{window.max.y} - window.min.y + 1;
     check_image_size(width, height, limits);
     const auto names = pick_channels(file.header().channels());
 
     Image image(static_cast<int>(width), static_cast<int>(height));
-    float* base = image.data().data() - (int64_t{window.min.x} + int64_t{window.min.y} * width) * 3;
     const bool grey = names[0] == names[1];
     Imf::FrameBuffer fb;
+    // Slice::Make places the data window's first pixel at the buffer start without forming a pointer
+    // outside the buffer here (the window may sit anywhere in int32 space).
     for (int c = 0; c < (grey ? 1 : 3); ++c)
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base + c), sizeof(float) * 3,
-                                     sizeof(float) * 3 * size_t(width)));
+      fb.insert(names[c], Imf::Slice::Make(Imf::FLOAT, image.data().data() + c, window, sizeof(float) * 3,
+                                           sizeof(float) * 3 * size_t(width)));
     file.setFrameBuffer(fb);
     file.readPixels(window.min.y, window.max.y);
     if (grey) {

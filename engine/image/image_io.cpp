@@ -1,11 +1,9 @@
 #include "engine/image/image_io.hpp"
 
-#include <cmath>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <iterator>
-
-#include <fmt/format.h>
 
 #include "engine/core/error.hpp"
 
@@ -58,8 +56,7 @@ DecodedImage read_image(std::span<const uint8_t> bytes, const ImageLimits& limit
     case ImageFormat::Pfm: image = read_pfm(bytes, limits); break;
     default: image = read_hdr(bytes, limits); break;
   }
-  const size_t clamped = sanitize_radiance(image);
-  return {std::move(image), *format, clamped};
+  return {std::move(image), *format};
 }
 
 DecodedImage read_image_file(const std::filesystem::path& path, const ImageLimits& limits) {
@@ -83,37 +80,6 @@ void write_file(const std::filesystem::path& path, std::span<const uint8_t> byte
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   if (!out) throw Error(ErrorKind::NotFound, "cannot write " + path.string());
-}
-
-namespace {
-
-[[noreturn]] void reject_pixel(const Image& image, size_t index, float v, const char* what) {
-  const size_t pixel = index / 3, w = size_t(image.width());
-  throw Error(ErrorKind::InvalidData,
-              fmt::format("pixel ({}, {}) has a {} value ({}); radiance must be finite and non-negative", pixel % w,
-                          pixel / w, what, v));
-}
-
-}  // namespace
-
-size_t sanitize_radiance(Image& image) {
-  const auto data = image.data();
-  double sum = 0;
-  for (size_t i = 0; i < data.size(); ++i) {
-    const float v = data[i];
-    if (std::isnan(v)) reject_pixel(image, i, v, "NaN");
-    if (std::isinf(v)) reject_pixel(image, i, v, "infinite");
-    sum += std::abs(v);
-  }
-  const double tolerance = kNegativeTolerance * sum / double(std::max<size_t>(1, data.size()));
-  size_t clamped = 0;
-  for (size_t i = 0; i < data.size(); ++i) {
-    if (data[i] >= 0.0f) continue;
-    if (data[i] < -tolerance) reject_pixel(image, i, data[i], "negative");
-    data[i] = 0.0f;
-    ++clamped;
-  }
-  return clamped;
 }
 
 }  // namespace lp

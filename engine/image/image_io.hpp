@@ -1,6 +1,7 @@
 #pragma once
-// Reading and writing images. Readers detect the format from the magic bytes, check sizes against
-// limits before allocating, and reject NaN, Inf and negative pixels (see sanitize_radiance).
+// Reading and writing images. Readers detect the format from the magic bytes and check sizes against
+// limits and against the bytes present before allocating. Pixel values come back as stored: what a
+// map does with NaN, Inf and negative values is the environment map's policy (envmap/invalid_pixels.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -29,7 +30,6 @@ std::optional<ImageFormat> detect_format(std::span<const uint8_t> bytes);
 struct DecodedImage {
   Image image;
   ImageFormat format;
-  size_t clamped_negatives = 0;  // see sanitize_radiance
 };
 
 // Throws lp::Error: Unsupported (unknown magic), Corrupt, TooLarge, InvalidData.
@@ -59,12 +59,5 @@ std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone);  //
 std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb8, int width, int height);
 
 void write_file(const std::filesystem::path& path, std::span<const uint8_t> bytes);
-
-// Checks every value is finite and non-negative; throws InvalidData naming the first bad pixel.
-// Lossy codecs (OpenEXR's DWA, B44) leave tiny negative values in real maps, e.g. -0.004 where the
-// mean is 0.47 in Blender's own sunrise.exr; negatives no larger than kNegativeTolerance times the
-// mean value are clamped to zero instead, and their count returned.
-inline constexpr double kNegativeTolerance = 0.02;
-size_t sanitize_radiance(Image& image);
 
 }  // namespace lp

@@ -10,6 +10,7 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
+#include "engine/render/obj_prescan.hpp"
 
 namespace lp::render {
 namespace {
@@ -44,10 +45,19 @@ void check_transform(const MeshObject& m) {
 
 }  // namespace
 
+void check_obj_file(const std::filesystem::path& path, const MeshLimits& limits) {
+  const std::string name = path.filename().string();
+  check_obj_text(read_text(path, limits.max_file_bytes), name, limits.max_triangles);
+}
+
 TriangleMesh load_obj_mesh(const MeshObject& m, const MeshLimits& limits) {
+  return obj_mesh_from_text(read_text(m.path, limits.max_file_bytes), m.path.filename().string(), m, limits);
+}
+
+TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& m,
+                                const MeshLimits& limits) {
   check_transform(m);
-  const std::string name = m.path.filename().string();
-  const std::string text = read_text(m.path, limits.max_file_bytes);
+  check_obj_text(text, name, limits.max_triangles);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

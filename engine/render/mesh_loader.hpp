@@ -2,6 +2,8 @@
 // Triangle meshes from Wavefront OBJ files (tinyobjloader), transformed into the world: scale, then
 // rotations about x, y and z (degrees), then translation. Materials (.mtl) are never read.
 #include <cstdint>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "engine/core/vec3.hpp"
@@ -18,5 +20,11 @@ struct TriangleMesh {
 // Throws lp::Error: NotFound (no such file), TooLarge (over the limits), Corrupt (unparseable, no
 // triangles, indices out of range, non-finite vertices), InvalidArgument (bad transform).
 TriangleMesh load_obj_mesh(const MeshObject& mesh, const MeshLimits& limits);
+// The same from the file's text; `name` appears in messages.
+TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& mesh,
+                                const MeshLimits& limits);
+// Reads the file and refuses what load_obj_mesh would refuse before parsing (see obj_prescan.hpp),
+// so that a request can be answered at once.
+void check_obj_file(const std::filesystem::path& path, const MeshLimits& limits);
 
 }  // namespace lp::render

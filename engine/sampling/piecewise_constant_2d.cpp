@@ -26,8 +26,8 @@ double build_cdf(const float* w, int n, float* cdf) {
     cdf[i + 1] = float(sum);
   }
   if (sum > 0) {
-    const auto inv = float(1.0 / sum);
-    for (int i = 1; i < n; ++i) cdf[i] *= inv;
+    const double inv = 1.0 / sum;  // over a float's range when the weights are tiny
+    for (int i = 1; i < n; ++i) cdf[i] = float(cdf[i] * inv);
   } else {
     for (int i = 1; i < n; ++i) cdf[i] = float(i) / float(n);
   }
@@ -57,7 +57,7 @@ PiecewiseConstant2D::PiecewiseConstant2D(int width, int height, const RowFiller&
   build_cdf(row_weights.data(), height, marginal_cdf_.data());
 
   // Density on the unit square = weight / mean weight (applied on lookup: no pass over the table).
-  density_scale_ = float(double(width) * double(height) / total_);
+  density_scale_ = double(width) * double(height) / total_;
 }
 
 GridSample PiecewiseConstant2D::sample(float u1, float u2) const {

@@ -29,7 +29,9 @@ class PiecewiseConstant2D {
 
   // u1 picks the column within the row, u2 picks the row. Both in [0, 1).
   GridSample sample(float u1, float u2) const;
-  float density(int x, int y) const { return weight_[size_t(y) * width_ + x] * density_scale_; }
+  float density(int x, int y) const {
+    return float(double(weight_[size_t(y) * width_ + x]) * density_scale_);
+  }
 
   // Row probabilities (sum 1) and the marginal CDF (height + 1 entries, 0 .. 1).
   std::span<const float> marginal_cdf() const { return marginal_cdf_; }
@@ -47,7 +49,8 @@ class PiecewiseConstant2D {
   // Large tables are left uninitialised on allocation (every entry is written once).
   std::unique_ptr<float[]> conditional_cdf_;  // height * (width + 1)
   std::unique_ptr<float[]> weight_;           // width * height
-  float density_scale_ = 0;                   // weight -> density on the unit square
+  // weight -> density on the unit square; double because tiny weights make it overflow a float
+  double density_scale_ = 0;
 };
 
 }  // namespace lp

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
@@ -129,7 +130,10 @@ TEST(EnvMapApi, BadUploadsAreRefusedAndLeaveLoadedMapsAlone) {
   exr.resize(exr.size() / 3);
   expect_error(upload(*c, "truncated", exr), 422);
   const std::string nan_pfm = std::string("PF\n1 1\n-1.0\n") + std::string("\x00\x00\xc0\x7f\x00\x00\x80\x3f\x00\x00\x80\x3f", 12);
-  expect_error(upload(*c, "nan", std::vector<uint8_t>(nan_pfm.begin(), nan_pfm.end())), 422, "NaN");
+  // One NaN pixel: black under the default policy, which leaves nothing to sample; named under reject.
+  expect_error(upload(*c, "nan", std::vector<uint8_t>(nan_pfm.begin(), nan_pfm.end())), 422, "no energy");
+  expect_error(upload(*c, "nan&invalid=reject", std::vector<uint8_t>(nan_pfm.begin(), nan_pfm.end())), 422,
+               "pixel (0, 0) has a NaN value");
   expect_error(upload(*c, "forest_exr", test::read_bytes(test::envmap_path("studio.hdr"))), 409);
   expect_error(upload(*c, "", test::read_bytes(test::envmap_path("studio.hdr"))), 400, "name");
   expect_error(c->Post("/api/v1/envmaps?name=empty", "", "application/octet-stream"), 400);
@@ -151,7 +155,8 @@ TEST(EnvMapApi, UnknownIdsAre404) {
 
 TEST(EnvMapApi, ImageInEveryFormat) {
   auto c = shared_server().client();
-  const Image original = read_image_file(test::envmap_path("forest.pfm")).image;
+  // The map as loaded: its few negative values clamped to zero.
+  const Image original = EnvMap(read_image_file(test::envmap_path("forest.pfm")).image).image();
   for (const char* format : {"exr", "pfm"}) {
     auto r = c->Get((std::string("/api/v1/envmaps/forest_pfm/image?format=") + format).c_str());
     ASSERT_EQ(r->status, 200);

@@ -35,21 +35,14 @@ using namespace std::chrono_literals;
 class TempDataDir {
  public:
   TempDataDir() {
-    char tmpl[] = "/tmp/lightprobe-render-data-XXXXXX";
-    if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
-    path_ = tmpl;
-    fs::create_directories(path_ / "meshes");
-    fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path_ / "meshes" / "bunny.obj");
-    fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path_ / "escape.obj");
+    fs::create_directories(path() / "meshes");
+    fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path() / "meshes" / "bunny.obj");
+    fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path() / "escape.obj");
   }
-  ~TempDataDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
+  const fs::path& path() const { return dir_.path(); }
 
  private:
-  fs::path path_;
+  test::TempDir dir_;
 };
 
 const fs::path& data_dir() {
@@ -468,13 +461,12 @@ TEST(RenderQueue, AFullQueueAnswers503WithRetryAfter) {
   EXPECT_EQ(list.body_json()["queued"], 1);
 }
 
-TEST(RenderQueue, AMeshOverTheTriangleLimitFailsTheJob) {
-  auto& s = small_server();
-  const std::string id = submit(s, render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
-  const json st = wait_finished(s, id);
-  EXPECT_EQ(st["status"], "failed");
-  EXPECT_EQ(st["error"]["code"], "too_large") << st.dump();
-  EXPECT_EQ(get(s, "/api/v1/renders/" + id + "/image").status, 409);
+TEST(RenderQueue, AMeshOverTheTriangleLimitIsRefusedAtSubmission) {
+  auto& s = small_server();  // --max-mesh-triangles 1000
+  const Reply r = post(s, "/api/v1/renders", render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
+  EXPECT_EQ(r.status, 400) << r.body;
+  EXPECT_NE(r.body.find("scene.objects[0].path"), std::string::npos) << r.body;
+  EXPECT_NE(r.body.find("has over 1000 triangles"), std::string::npos) << r.body;
 }
 
 TEST(RenderQueue, FinishedJobsAreBoundedAndTheOldestDropped) {

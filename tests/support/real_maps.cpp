@@ -14,8 +14,7 @@ std::shared_ptr<const EnvMap> real_map(const std::string& file) {
   std::lock_guard lock(mutex);
   auto& slot = cache[file];
   if (!slot) {
-    DecodedImage d = read_image_file(envmap_path(file));
-    slot = std::make_shared<const EnvMap>(std::move(d.image), d.clamped_negatives);
+    slot = std::make_shared<const EnvMap>(read_image_file(envmap_path(file)).image);
   }
   return slot;
 }

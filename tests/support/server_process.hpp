@@ -26,6 +26,7 @@ class ServerProcess {
   // A client with generous timeouts, bound to this server.
   std::unique_ptr<httplib::Client> client() const;
   bool alive() const;  // the process has not exited
+  int pid() const { return pid_; }
   const std::string& log_path() const { return log_path_; }
   std::string log() const;  // the server's output so far
 

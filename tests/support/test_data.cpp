@@ -19,6 +19,10 @@ std::vector<std::string> real_envmap_files() {
   return files;
 }
 
+std::filesystem::path fuzz_corpus_path(const std::string& target, const std::string& file) {
+  return std::filesystem::path(LIGHTPROBE_FUZZ_CORPUS) / target / file;
+}
+
 std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());
