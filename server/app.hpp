@@ -3,6 +3,7 @@
 #include <atomic>
 #include <memory>
 
+#include "engine/core/memory_budget.hpp"
 #include "server/envmap_registry.hpp"
 #include "server/job_manager.hpp"
 #include "server/options.hpp"
@@ -16,13 +17,17 @@ inline JobManagerConfig render_job_config(const Options& o) {
 
 struct App {
   Options options;
+  MemoryBudget memory;  // --max-memory-mb: maps, their caches, images in flight, render results
   EnvMapRegistry envmaps;
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)
-      : options(std::move(opts)), envmaps(options.max_envmaps), renders(render_job_config(options)) {}
+      : options(std::move(opts)),
+        memory(options.max_memory_mb << 20),
+        envmaps(options.max_envmaps),
+        renders(render_job_config(options)) {}
 };
 
 }  // namespace lp::server
