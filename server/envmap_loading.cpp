@@ -20,16 +20,26 @@ void check_new_name(const App& app, const std::string& name) {
   if (app.envmaps.find(name)) throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
 }
 
-// Limits whose allocation hook reserves the decoded pixels in `pixels`, before the reader allocates them.
-ImageLimits budgeted_limits(App& app, MemoryReservation& pixels) {
+// The pixels of an image being decoded, reserved before the reader allocates them: from the memory
+// budget (they stay with the map) and from the share of it that decodes in flight may take together.
+struct DecodeMemory {
+  MemoryReservation pixels, decoding;
+};
+
+void reserve_or_resize(MemoryReservation& r, const MemoryBudget& budget, int64_t bytes, const std::string& what) {
+  if (r)
+    r.resize(bytes);
+  else
+    r = budget.reserve(bytes, MemoryUse::Transient, what);
+}
+
+ImageLimits budgeted_limits(App& app, DecodeMemory& memory) {
   ImageLimits limits = image_limits(app.options);
-  limits.before_allocation = [&app, &pixels](int64_t width, int64_t height) {
+  limits.before_allocation = [&app, &memory](int64_t width, int64_t height) {
     const int64_t bytes = EnvMap::image_bytes(width, height);
-    if (pixels)
-      pixels.resize(bytes);
-    else
-      pixels = app.memory.reserve(bytes, MemoryUse::Transient,
-                                  fmt::format("decoding a {}x{} image", width, height));
+    const std::string what = fmt::format("decoding a {}x{} image", width, height);
+    reserve_or_resize(memory.decoding, app.decoding, bytes, what + " (with the decodes in flight)");
+    reserve_or_resize(memory.pixels, app.memory, bytes, what);
   };
   return limits;
 }
@@ -63,10 +73,10 @@ ImageLimits image_limits(const Options& options) {
 std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name, std::span<const uint8_t> bytes,
                                                          const std::string& source) {
   check_new_name(app, name);
-  MemoryReservation pixels;
-  DecodedImage decoded = read_image(bytes, budgeted_limits(app, pixels));
+  DecodeMemory memory;
+  DecodedImage decoded = read_image(bytes, budgeted_limits(app, memory));
   return register_image(app, name, std::move(decoded), format_name(decoded.format), source,
-                        std::move(pixels));
+                        std::move(memory.pixels));
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::string& name,
@@ -76,10 +86,10 @@ std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::str
   const auto file_bytes = std::filesystem::file_size(path, unknown_size);
   const MemoryReservation file = app.memory.reserve(
       unknown_size ? 0 : int64_t(file_bytes), MemoryUse::Transient, "reading the file of map '" + name + "'");
-  MemoryReservation pixels;
-  DecodedImage decoded = read_image_file(path, budgeted_limits(app, pixels));
+  DecodeMemory memory;
+  DecodedImage decoded = read_image_file(path, budgeted_limits(app, memory));
   return register_image(app, name, std::move(decoded), format_name(decoded.format), source,
-                        std::move(pixels));
+                        std::move(memory.pixels));
 }
 
 void register_default_envmap(App& app) {
