@@ -23,7 +23,7 @@ inline int64_t decoding_budget_bytes(const Options& o) {
 
 struct App {
   Options options;
-  MemoryBudget memory;  // --max-memory-mb: maps, their caches, images in flight, render results
+  MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
