@@ -13,6 +13,7 @@ Json envmap_metadata(const EnvMapInfo& info, const EnvMap& map) {
           {"name", info.name},
           {"width", map.width()},
           {"height", map.height()},
+          {"memory_bytes", map.memory_bytes()},
           {"format", info.format},
           {"source", info.source},
           {"mean_radiance", rgb_json(map.mean_radiance())},

@@ -1,8 +1,10 @@
 #pragma once
 // Everything the handlers share: the options and the registries.
+#include <algorithm>
 #include <atomic>
 #include <memory>
 
+#include "engine/core/memory_budget.hpp"
 #include "server/envmap_registry.hpp"
 #include "server/job_manager.hpp"
 #include "server/options.hpp"
@@ -14,15 +16,26 @@ inline JobManagerConfig render_job_config(const Options& o) {
   return {o.max_running_jobs, o.max_queued_jobs, o.max_finished_jobs, o.max_finished_mb << 20, o.threads};
 }
 
+// Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
+inline int64_t decoding_budget_bytes(const Options& o) {
+  return std::min(o.max_memory_mb << 20, 2 * EnvMap::image_bytes(o.max_pixels, 1));
+}
+
 struct App {
   Options options;
+  MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
+  MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)
-      : options(std::move(opts)), envmaps(options.max_envmaps), renders(render_job_config(options)) {}
+      : options(std::move(opts)),
+        memory(options.max_memory_mb << 20),
+        decoding(decoding_budget_bytes(options)),
+        envmaps(options.max_envmaps),
+        renders(render_job_config(options)) {}
 };
 
 }  // namespace lp::server

@@ -1,7 +1,9 @@
 #include "server/envmap_loading.hpp"
 
 #include <chrono>
+#include <system_error>
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include "api/api_error.hpp"
@@ -18,11 +20,38 @@ void check_new_name(const App& app, const std::string& name) {
   if (app.envmaps.find(name)) throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
 }
 
+// The pixels of an image being decoded, reserved before the reader allocates them: from the memory
+// budget (they stay with the map) and from the share of it that decodes in flight may take together.
+struct DecodeMemory {
+  MemoryReservation pixels, decoding;
+};
+
+void reserve_or_resize(MemoryReservation& r, const MemoryBudget& budget, int64_t bytes, const std::string& what) {
+  if (r)
+    r.resize(bytes);
+  else
+    r = budget.reserve(bytes, MemoryUse::Transient, what);
+}
+
+ImageLimits budgeted_limits(App& app, DecodeMemory& memory) {
+  ImageLimits limits = image_limits(app.options);
+  limits.before_allocation = [&app, &memory](int64_t width, int64_t height) {
+    const int64_t bytes = EnvMap::image_bytes(width, height);
+    const std::string what = fmt::format("decoding a {}x{} image", width, height);
+    reserve_or_resize(memory.decoding, app.decoding, bytes, what + " (with the decodes in flight)");
+    reserve_or_resize(memory.pixels, app.memory, bytes, what);
+  };
+  return limits;
+}
+
+// `pixels` holds the image's bytes; they stay with the map.
 std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& name, DecodedImage decoded,
                                                   const std::string& format, const std::string& source,
-                                                  InvalidPixelPolicy policy) {
+                                                  InvalidPixelPolicy policy, MemoryReservation pixels) {
   const auto start = std::chrono::steady_clock::now();
-  auto map = std::make_shared<const EnvMap>(std::move(decoded.image), policy);
+  auto map = std::make_shared<EnvMap>(std::move(decoded.image), policy);
+  pixels.set_use(MemoryUse::Held);
+  map->account_memory(app.memory, std::move(pixels));
   map->sampler(LuminanceMode::Average);  // precompute the default distribution once, now
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   auto entry = app.envmaps.add(name, format, source, std::move(map));
@@ -45,21 +74,32 @@ ImageLimits image_limits(const Options& options) {
 std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name, std::span<const uint8_t> bytes,
                                                          const std::string& source, InvalidPixelPolicy policy) {
   check_new_name(app, name);
-  DecodedImage decoded = read_image(bytes, image_limits(app.options));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy);
+  DecodeMemory memory;
+  DecodedImage decoded = read_image(bytes, budgeted_limits(app, memory));
+  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy,
+                        std::move(memory.pixels));
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::string& name,
                                                         const std::filesystem::path& path, const std::string& source,
                                                         InvalidPixelPolicy policy) {
   check_new_name(app, name);
-  DecodedImage decoded = read_image_file(path, image_limits(app.options));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy);
+  std::error_code unknown_size;
+  const auto file_bytes = std::filesystem::file_size(path, unknown_size);
+  const MemoryReservation file = app.memory.reserve(
+      unknown_size ? 0 : int64_t(file_bytes), MemoryUse::Transient, "reading the file of map '" + name + "'");
+  DecodeMemory memory;
+  DecodedImage decoded = read_image_file(path, budgeted_limits(app, memory));
+  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy,
+                        std::move(memory.pixels));
 }
 
 void register_default_envmap(App& app) {
-  register_image(app, "default", {make_procedural_sky(), ImageFormat::Exr}, "procedural", "procedural",
-                 InvalidPixelPolicy::Reject);
+  Image sky = make_procedural_sky();
+  auto pixels =
+      app.memory.reserve(EnvMap::image_bytes(sky.width(), sky.height()), MemoryUse::Held, "the default map");
+  register_image(app, "default", {std::move(sky), ImageFormat::Exr}, "procedural", "procedural",
+                 InvalidPixelPolicy::Reject, std::move(pixels));
 }
 
 }  // namespace lp::server

@@ -1,10 +1,13 @@
 #include "server/options.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "server/machine_memory.hpp"
 
 namespace lp::server {
 namespace {
@@ -24,6 +27,9 @@ Usage: lightprobe-server [options]
   --max-samples N        most samples per request (default 10000000)
   --max-envmaps N        most maps held at once (default 64)
   --max-lights N         most median-cut lights per request (default 65536)
+  --max-memory-mb N      MiB for maps, their sampling tables and caches, images in flight and render
+                         results; past it, caches are evicted, then requests get 503 or 507
+                         (default: half the machine's memory, or of its cgroup limit)
   --max-render-width N   widest render in pixels (default 4096)
   --max-render-height N  tallest render in pixels (default 4096)
   --max-render-spp N     most samples per pixel of a render (default 65536)
@@ -54,6 +60,10 @@ int64_t parse_count(const std::string& flag, const std::string& value, int64_t m
 }
 
 }  // namespace
+
+int64_t default_max_memory_mb() {
+  return std::max<int64_t>(1, machine_memory_bytes() / 2 >> 20);
+}
 
 std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
   Options o = std::move(defaults);
@@ -95,6 +105,8 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.max_samples = parse_count(flag, value(), 1, int64_t{1} << 32);
     } else if (flag == "--max-envmaps") {
       o.max_envmaps = parse_count(flag, value(), 1, 100000);
+    } else if (flag == "--max-memory-mb") {
+      o.max_memory_mb = parse_count(flag, value(), 1, int64_t{1} << 30);
     } else if (flag == "--max-lights") {
       o.max_lights = parse_count(flag, value(), 1, int64_t{1} << 24);
     } else if (flag == "--max-render-width") {

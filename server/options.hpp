@@ -9,6 +9,9 @@
 
 namespace lp::server {
 
+// Half the memory of the machine (or of its cgroup limit).
+int64_t default_max_memory_mb();
+
 struct Options {
   std::string host = "127.0.0.1";
   int port = 8080;  // 0 = any free port (printed on start)
@@ -21,6 +24,8 @@ struct Options {
   int64_t max_samples = 10'000'000;
   int64_t max_envmaps = 64;
   int64_t max_lights = 65536;
+  // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
+  int64_t max_memory_mb = default_max_memory_mb();
   bool list_routes = false;  // print "METHOD PATH" per registered route and exit
   // Renders (POST /api/v1/renders).
   int max_render_width = 4096;

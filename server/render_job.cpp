@@ -57,6 +57,11 @@ int64_t RenderJob::retained_bytes() const {
   return image_ ? int64_t(image_->data().size_bytes()) : 0;
 }
 
+void RenderJob::keep_result_memory() {
+  memory_.resize(std::min(memory_.bytes(), retained_bytes()));
+  memory_.set_use(MemoryUse::Held);
+}
+
 RenderRecord RenderJob::record() const {
   return record(status(), error());
 }

@@ -40,6 +40,9 @@ class RenderJob : public Job {
   RenderRecord record() const;
   RenderRecord record(JobStatus status, const std::optional<JobError>& error) const;
   int64_t retained_bytes() const override;
+  // The job's reservation in the memory budget (see render_memory.hpp); it shrinks to the kept image
+  // when the job ends. Set before the job is submitted.
+  void hold_memory(MemoryReservation memory) { memory_ = std::move(memory); }
 
   void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
   void save_record(JobStatus status, const std::optional<JobError>& error) const;
@@ -48,12 +51,16 @@ class RenderJob : public Job {
  protected:
   bool run() override;
   void describe(nlohmann::json& out) const override;
-  void ending(JobStatus status, const std::optional<JobError>& error) override { save_record(status, error); }
+  void ending(JobStatus status, const std::optional<JobError>& error) override {
+    keep_result_memory();
+    save_record(status, error);
+  }
   void forgotten() override { delete_state(); }
 
  private:
   void publish(const render::Renderer& renderer, double render_s);
-  void checkpoint();  // the image of the passes done, then the record naming it
+  void checkpoint();
+  void keep_result_memory();  // the image of the passes done, then the record naming it
   int skip_done_passes(std::vector<int>& passes) const;
 
   const api::RenderRequest request_;
@@ -69,6 +76,8 @@ class RenderJob : public Job {
   render::RenderStats stats_;
   double render_s_ = 0;  // time spent in passes (not building the scene), for the rates
   std::string image_file_, envmap_fingerprint_;
+
+  MemoryReservation memory_;
 
   mutable std::mutex store_mutex_;  // one write at a time; none after delete_state()
   mutable bool deleted_ = false;

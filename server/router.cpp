@@ -6,6 +6,7 @@
 
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
+#include "server/memory_refusal.hpp"
 
 namespace lp::server {
 namespace {
@@ -54,6 +55,8 @@ Handler guarded(Handler handler) {
       handler(req, res);
     } catch (const api::ApiError& e) {
       send_error(res, e.status(), e.code(), e.what());
+    } catch (const MemoryBudgetError& e) {
+      send_memory_refusal(res, e);
     } catch (const Error& e) {
       send_error(res, status_for(e.kind()), code_for(e.kind()), e.what());
     } catch (const std::bad_alloc&) {

@@ -3,8 +3,10 @@
 #include "api/envmap_load_request.hpp"
 #include "api/envmap_schema.hpp"
 #include "api/preview_params.hpp"
+#include "engine/image/encode_memory.hpp"
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
+#include "server/reserved_content.hpp"
 #include "server/routes.hpp"
 #include "server/stored_maps.hpp"
 
@@ -53,9 +55,12 @@ void create(App& app, const httplib::Request& req, httplib::Response& res) {
 void image(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
   const auto preview = api::parse_preview_params(req.params);
-  const auto bytes = write_image(entry->map->image(), preview.format, preview.tone);
-  res.set_content(reinterpret_cast<const char*>(bytes.data()), bytes.size(),
-                  format_mime_type(preview.format));
+  const Image& pixels = entry->map->image();
+  auto memory =
+      app.memory.reserve(encode_bytes(preview.format, pixels.width(), pixels.height()), MemoryUse::Transient,
+                         std::string("encoding a map as ") + format_name(preview.format));
+  send_reserved(res, write_image(pixels, preview.format, preview.tone), format_mime_type(preview.format),
+                std::move(memory));
 }
 
 void distribution(App& app, const httplib::Request& req, httplib::Response& res) {

@@ -4,7 +4,9 @@
 
 #include "api/median_cut_request.hpp"
 #include "api/median_cut_schema.hpp"
+#include "engine/image/encode_memory.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
+#include "server/reserved_content.hpp"
 #include "server/routes.hpp"
 
 namespace lp::server {
@@ -26,9 +28,12 @@ void median_cut_png(App& app, const httplib::Request& req, httplib::Response& re
   const auto r = api::parse_median_cut_image_query(req.params, app.options.max_lights);
   api::check_count_fits(r.params, entry->map->image().pixel_count());
   const auto result = median_cut_cached(*entry->map, r.params);
+  const int64_t w = entry->map->width(), h = entry->map->height();
+  auto memory = app.memory.reserve(median_cut_plot_bytes(w, h) + png_rgb8_encode_bytes(w, h),
+                                   MemoryUse::Transient, "a median cut picture");
   const auto rgb = plot_median_cut(entry->map->image(), *result, r.style, r.tone);
-  const auto png = encode_png_rgb8(rgb, entry->map->width(), entry->map->height());
-  res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+  send_reserved(res, encode_png_rgb8(rgb, entry->map->width(), entry->map->height()), "image/png",
+                std::move(memory));
 }
 
 }  // namespace

@@ -9,9 +9,12 @@
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
+#include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
 #include "server/render_job.hpp"
+#include "server/render_memory.hpp"
 #include "server/render_requests.hpp"
+#include "server/reserved_content.hpp"
 #include "server/routes.hpp"
 #include "server/stored_renders.hpp"
 
@@ -47,8 +50,10 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   resolve_meshes(request.scene, app.options);
+  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height);
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
                                          app.state.get());
+  job->hold_memory(std::move(memory));
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
   job->save_record();
   if (!app.renders.submit(job)) {
@@ -83,10 +88,14 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
     throw api::ApiError(
         409, "no_image_yet",
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
-  const auto bytes = write_image(*current.image, params.format, params.tone);
+  const Image& pixels = *current.image;
+  auto memory =
+      app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
+                         std::string("encoding a render as ") + format_name(params.format));
   res.set_header("Cache-Control", "no-store");
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  res.set_content(reinterpret_cast<const char*>(bytes.data()), bytes.size(), format_mime_type(params.format));
+  send_reserved(res, write_image(pixels, params.format, params.tone), format_mime_type(params.format),
+                std::move(memory));
 }
 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {

@@ -6,6 +6,8 @@
 
 #include "api/sample_encoding.hpp"
 #include "engine/envmap/sample_plot.hpp"
+#include "engine/image/encode_memory.hpp"
+#include "server/reserved_content.hpp"
 #include "server/routes.hpp"
 
 namespace lp::server {
@@ -78,12 +80,17 @@ void samples_png(App& app, const httplib::Request& req, httplib::Response& res) 
   const auto entry = app.envmaps.get(path_param(req, 1));
   const auto r = api::parse_sample_image_query(req.params, app.options.max_samples);
   const auto sampler = entry->map->sampler(r.samples.luminance);
+  const int64_t w = entry->map->width(), h = entry->map->height();
+  auto memory =
+      app.memory.reserve(int64_t(r.samples.spec.count) * int64_t(sizeof(EnvSample)) +
+                             sample_plot_bytes(w, h) + png_rgb8_encode_bytes(w, h),
+                         MemoryUse::Transient, fmt::format("a picture of {} samples", r.samples.spec.count));
   std::vector<EnvSample> drawn(r.samples.spec.count);
   generate_samples(*sampler, r.samples.spec, 0, drawn);
   const auto rgb = r.style == api::SampleImageStyle::Marks ? plot_sample_marks(*entry->map, drawn, r.tone)
                                                            : plot_sample_windows(*entry->map, drawn, r.tone);
-  const auto png = encode_png_rgb8(rgb, entry->map->width(), entry->map->height());
-  res.set_content(reinterpret_cast<const char*>(png.data()), png.size(), "image/png");
+  send_reserved(res, encode_png_rgb8(rgb, entry->map->width(), entry->map->height()), "image/png",
+                std::move(memory));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "api/api_error.hpp"
 #include "engine/image/image_io.hpp"
 #include "server/envmap_fingerprint.hpp"
+#include "server/render_memory.hpp"
 #include "server/render_requests.hpp"
 
 namespace lp::server {
@@ -115,8 +116,10 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
     throw cannot_resume(
         *job, "envmap_changed",
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
+  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height);
   auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
                                           job->image().image, app.state.get());
+  next->hold_memory(std::move(memory));
   next->save_record();
   if (!app.renders.submit(next)) {
     if (app.renders.find(job->id()) != job)

@@ -1,5 +1,6 @@
 #include "engine/envmap/envmap.hpp"
 
+#include <fmt/format.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
@@ -34,7 +35,8 @@ Rgb compute_power(const Image& image) {
 
 }  // namespace
 
-EnvMap::EnvMap(Image image, InvalidPixelPolicy policy) : image_(std::move(image)) {
+EnvMap::EnvMap(Image image, InvalidPixelPolicy policy)
+    : image_(std::move(image)), cache_(std::make_shared<Cache>()) {
   if (image_.empty()) throw Error(ErrorKind::InvalidData, "environment map is empty");
   invalid_pixels_ = sanitize_radiance(image_, policy);
   power_ = compute_power(image_);
@@ -57,20 +59,70 @@ Rgb EnvMap::radiance(Vec3 direction) const { return radiance(latlong::uv(directi
 
 std::shared_ptr<const EnvMapSampler> EnvMap::sampler(LuminanceMode mode) const {
   return derived<EnvMapSampler>(std::string("sampler:") + luminance_mode_name(mode),
+                                EnvMapSampler::memory_bytes(width(), height()),
                                 [&] { return std::make_shared<const EnvMapSampler>(*this, mode); });
 }
 
-const std::any& EnvMap::derived_any(const std::string& key, const std::function<std::any()>& build) const {
-  std::shared_ptr<Slot> slot;
-  {
-    std::lock_guard lock(cache_mutex_);
-    auto& entry = cache_[key];
+// The derived data by key. Shared with the eviction callbacks, which may outlive the map.
+struct EnvMap::Cache {
+  struct Slot {
+    std::mutex mutex;  // held while the value is built
+    std::any value;
+    std::shared_ptr<const MemoryReservation> memory;  // null for untracked data
+  };
+
+  std::mutex mutex;
+  std::map<std::string, std::shared_ptr<Slot>> slots;
+
+  std::shared_ptr<Slot> slot(const std::string& key) {
+    std::lock_guard lock(mutex);
+    auto& entry = slots[key];
     if (!entry) entry = std::make_shared<Slot>();
-    slot = entry;
+    return entry;
   }
+  // Drops the slot if it is still the one for `key`; its value goes with its last user.
+  void evict(const std::string& key, const Slot* slot) {
+    std::shared_ptr<Slot> dropped;
+    std::lock_guard lock(mutex);
+    auto it = slots.find(key);
+    if (it == slots.end() || it->second.get() != slot) return;
+    dropped = std::move(it->second);
+    slots.erase(it);
+  }
+};
+
+void EnvMap::account_memory(MemoryBudget budget, MemoryReservation image) {
+  budget_ = std::move(budget);
+  image_memory_ = std::move(image);
+}
+
+int64_t EnvMap::memory_bytes() const {
+  int64_t bytes = image_memory_.bytes();
+  std::lock_guard lock(cache_->mutex);
+  for (const auto& [key, slot] : cache_->slots)
+    if (slot->memory) bytes += slot->memory->bytes();
+  return bytes;
+}
+
+std::any EnvMap::derived_any(
+    const std::string& key, int64_t bytes,
+    const std::function<std::any(std::shared_ptr<const MemoryReservation>)>& build) const {
+  const auto slot = cache_->slot(key);
   std::lock_guard lock(slot->mutex);
-  if (!slot->value) slot->value = std::make_shared<const std::any>(build());
-  return *slot->value;  // slots are never removed, so the reference outlives the lock
+  if (slot->value.has_value()) {
+    if (slot->memory) slot->memory->touch();
+    return slot->value;
+  }
+  std::shared_ptr<const MemoryReservation> memory;
+  if (bytes > 0)
+    memory = std::make_shared<const MemoryReservation>(
+        budget_.reserve_cache(bytes, fmt::format("the {} data of a {}x{} map", key, width(), height()),
+                              [cache = std::weak_ptr<Cache>(cache_), key, raw = slot.get()] {
+                                if (const auto c = cache.lock()) c->evict(key, raw);
+                              }));
+  slot->value = build(memory);
+  slot->memory = std::move(memory);
+  return slot->value;
 }
 
 }  // namespace lp

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/envmap/invalid_pixels.hpp"
+#include "engine/core/memory_budget.hpp"
 #include "engine/envmap/latlong.hpp"
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image.hpp"
@@ -42,26 +43,52 @@ class EnvMap {
   // The importance sampler for a luminance mode, built on first use and cached.
   std::shared_ptr<const EnvMapSampler> sampler(LuminanceMode mode) const;
 
+  // The budget the map's memory comes from: `image` holds the image's bytes, and derived data built
+  // from now on reserves its own (see derived). Call before the map is shared.
+  void account_memory(MemoryBudget budget, MemoryReservation image);
+  // Bytes reserved now for the image and the derived data in the cache.
+  int64_t memory_bytes() const;
+  static int64_t image_bytes(int64_t width, int64_t height) {
+    return width * height * 3 * int64_t(sizeof(float));
+  }
+
   // Generic cache of derived data keyed by a string: `build` runs once per key (concurrent callers of
-  // the same key wait for it; if it throws, a later call tries again). Thread-safe.
+  // the same key wait for it; if it throws, a later call tries again). Thread-safe. Small data only:
+  // large data names its size (below).
   template <class T>
-  std::shared_ptr<const T> derived(const std::string& key, const std::function<std::shared_ptr<const T>()>& build) const {
-    const std::any& value = derived_any(key, [&] { return std::any(build()); });
+  std::shared_ptr<const T> derived(const std::string& key,
+                                   const std::function<std::shared_ptr<const T>()>& build) const {
+    return derived<T>(key, 0, build);
+  }
+  // The same for data of up to `bytes`: they are reserved from the map's budget before `build` runs
+  // (throws MemoryBudgetError if refused), and the entry may be evicted, least recently used first,
+  // when the budget needs room; its bytes return with its last user, and a later call builds it again.
+  template <class T>
+  std::shared_ptr<const T> derived(const std::string& key, int64_t bytes,
+                                   const std::function<std::shared_ptr<const T>()>& build) const {
+    const std::any value = derived_any(key, bytes, [&](std::shared_ptr<const MemoryReservation> memory) {
+      auto owner = std::make_shared<Owned<T>>(build(), std::move(memory));
+      return std::any(std::shared_ptr<const T>(owner, owner->value.get()));
+    });
     return std::any_cast<std::shared_ptr<const T>>(value);
   }
 
  private:
-  struct Slot {
-    std::mutex mutex;
-    std::shared_ptr<const std::any> value;
+  template <class T>
+  struct Owned {  // derived data with its reservation, released together with the last user
+    std::shared_ptr<const T> value;
+    std::shared_ptr<const MemoryReservation> memory;
   };
-  const std::any& derived_any(const std::string& key, const std::function<std::any()>& build) const;
+  struct Cache;
+  std::any derived_any(const std::string& key, int64_t bytes,
+                       const std::function<std::any(std::shared_ptr<const MemoryReservation>)>& build) const;
 
   Image image_;
   Rgb power_;
   InvalidPixelReport invalid_pixels_;
-  mutable std::mutex cache_mutex_;
-  mutable std::map<std::string, std::shared_ptr<Slot>> cache_;
+  MemoryBudget budget_;  // unlimited until account_memory
+  MemoryReservation image_memory_;
+  std::shared_ptr<Cache> cache_;
 };
 
 }  // namespace lp

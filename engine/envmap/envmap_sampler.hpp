@@ -24,6 +24,10 @@ struct EnvSample {
 class EnvMapSampler {
  public:
   EnvMapSampler(const EnvMap& map, LuminanceMode mode);
+  // The bytes a sampler of a width x height map holds once its alias table is built.
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return PiecewiseConstant2D::memory_bytes(width, height) + AliasTable2D::memory_bytes(width, height);
+  }
 
   // Inverse-CDF sample: u1 -> phi (column), u2 -> theta (row). Both in [0, 1).
   EnvSample sample(float u1, float u2) const;

@@ -4,6 +4,7 @@
 // map does with NaN, Inf and negative values is the environment map's policy (envmap/invalid_pixels.hpp).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,6 +23,9 @@ const char* format_mime_type(ImageFormat f);
 struct ImageLimits {
   int64_t max_pixels = int64_t{8192} * 8192;
   int max_dimension = 65536;
+  // Called with the size of the image a reader is about to allocate, once its size passed the checks
+  // (perhaps more than once for one image); it may throw to refuse the allocation (a memory budget).
+  std::function<void(int64_t width, int64_t height)> before_allocation;
 };
 
 // The format from the first bytes, or nullopt if none we read.

@@ -15,6 +15,7 @@ inline void check_image_size(int64_t width, int64_t height, const ImageLimits& l
   if (width > limits.max_dimension || height > limits.max_dimension || width * height > limits.max_pixels)
     throw Error(ErrorKind::TooLarge, fmt::format("image of {} x {} pixels is over the limit of {} pixels", width,
                                                  height, limits.max_pixels));
+  if (limits.before_allocation) limits.before_allocation(width, height);
 }
 
 }  // namespace lp

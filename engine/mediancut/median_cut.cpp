@@ -33,11 +33,12 @@ SplitTables build_split_tables(const Image& image, LuminanceMode mode, SplitRule
 SplitTables split_tables(const EnvMap& map, LuminanceMode mode, SplitRule rule) {
   const std::string name = luminance_mode_name(mode);
   SplitTables t;
-  t.weight = map.derived<SummedAreaTable>("sat:" + name, [&] {
+  const int64_t w = map.width(), h = map.height();
+  t.weight = map.derived<SummedAreaTable>("sat:" + name, SummedAreaTable::memory_bytes(w, h), [&] {
     return std::make_shared<const SummedAreaTable>(build_weight_table(map.image(), mode));
   });
   if (rule == SplitRule::Variance)
-    t.moments = map.derived<MomentTables>("sat_moments:" + name, [&] {
+    t.moments = map.derived<MomentTables>("sat_moments:" + name, MomentTables::memory_bytes(w, h), [&] {
       return std::make_shared<const MomentTables>(build_moment_tables(map.image(), mode));
     });
   return t;

@@ -22,6 +22,12 @@ enum class MedianCutStyle { Regions, Lights };
 const char* median_cut_style_name(MedianCutStyle s);  // "regions", "lights"
 std::optional<MedianCutStyle> parse_median_cut_style(std::string_view s);
 
+// Upper bound of the memory either picture takes for a width x height map: its 8-bit pixels and the
+// float image the light dots are drawn in.
+inline int64_t median_cut_plot_bytes(int64_t width, int64_t height) {
+  return (3 * int64_t(sizeof(float)) + 3) * width * height;
+}
+
 // `map` is the image the result was computed from.
 std::vector<uint8_t> plot_median_cut(const Image& map, const MedianCutResult& result, MedianCutStyle style,
                                      const ToneMap& tone);

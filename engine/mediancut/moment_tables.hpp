@@ -10,6 +10,10 @@ namespace lp {
 
 struct MomentTables {
   SummedAreaTable wx, wy, wxx, wyy;  // weight * x, weight * y, weight * x^2, weight * y^2
+
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return 4 * SummedAreaTable::memory_bytes(width, height);
+  }
 };
 
 // The sampling weight of a pixel: luminance * exact pixel solid angle (proportional to

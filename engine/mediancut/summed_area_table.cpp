@@ -13,6 +13,7 @@ namespace {
 
 // Rows of the table per strip: enough strips for load balance, few enough offset rows to be cheap.
 int strip_rows(int height) { return std::max(16, (height + 63) / 64); }
+int strip_count(int height) { return (height + strip_rows(height) - 1) / strip_rows(height); }
 
 // The table's buffer, left uninitialised (every entry is written once by the build). Large tables are
 // aligned to and marked for 2 MB pages where the kernel offers them: faulting in 268 MB of 4 KB pages
@@ -59,7 +60,7 @@ SummedAreaTable::SummedAreaTable(int width, int height, const RowFill& fill_row)
 
   // Table row t (1..height) holds image row t - 1; strip s holds table rows [1 + s*R, 1 + (s+1)*R).
   const int rows_per_strip = strip_rows(height);
-  const int strips = (height + rows_per_strip - 1) / rows_per_strip;
+  const int strips = strip_count(height);
   tbb::parallel_for(0, strips, [&](int s) {
     const int first = 1 + s * rows_per_strip, last = std::min(height, first + rows_per_strip - 1);
     for (int t = first; t <= last; ++t) {
@@ -83,6 +84,11 @@ SummedAreaTable::SummedAreaTable(int width, int height, const RowFill& fill_row)
   row_offset_.resize(size_t(height) + 1);
   row_offset_[0] = offsets_.data();
   for (int t = 1; t <= height; ++t) row_offset_[t] = &offsets_[size_t((t - 1) / rows_per_strip) * stride_];
+}
+
+int64_t SummedAreaTable::memory_bytes(int64_t width, int64_t height) {
+  const int64_t rows = height + 1 + strip_count(int(height));
+  return rows * (width + 1) * int64_t(sizeof(double)) + (height + 1) * int64_t(sizeof(const double*));
 }
 
 }  // namespace lp

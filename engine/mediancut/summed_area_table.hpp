@@ -34,6 +34,8 @@ class SummedAreaTable {
 
   size_t memory_bytes() const { return (size_t(height_ + 1) + offsets_.size() / stride_) * stride_ * sizeof(double); }
 
+  // The bytes a table over width x height values holds (memory_bytes() of the built table).
+  static int64_t memory_bytes(int64_t width, int64_t height);
  private:
   struct Free {
     void operator()(double* p) const { std::free(p); }

@@ -64,8 +64,16 @@ EnvImportance::EnvImportance(const EnvMapSampler& sampler)
   build_guide(marginal_cdf_.data(), 1, height_, marginal_guide_, marginal_guide_table_.data());
 }
 
+int64_t EnvImportance::memory_bytes(int64_t width, int64_t height) {
+  const int64_t row_guide = std::max<int64_t>(1, width / 4),
+                marginal_guide = std::max<int64_t>(1, height / 2);
+  return height * (width + 1) * int64_t(sizeof(Cell)) + height * (row_guide + 1) * int64_t(sizeof(uint32_t)) +
+         (height + 1) * int64_t(sizeof(float)) + (marginal_guide + 1) * int64_t(sizeof(uint32_t));
+}
+
 std::shared_ptr<const EnvImportance> EnvImportance::of(const EnvMap& map) {
-  return map.derived<EnvImportance>("render:env_importance", [&] {
+  const int64_t bytes = memory_bytes(map.width(), map.height());
+  return map.derived<EnvImportance>("render:env_importance", bytes, [&] {
     return std::make_shared<const EnvImportance>(*map.sampler(LuminanceMode::Average));
   });
 }

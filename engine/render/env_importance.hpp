@@ -29,6 +29,8 @@ struct EnvPixel {
 class EnvImportance {
  public:
   explicit EnvImportance(const EnvMapSampler& sampler);
+  // The bytes the tables of a width x height map hold.
+  static int64_t memory_bytes(int64_t width, int64_t height);
 
   // Built once per map and cached on it.
   static std::shared_ptr<const EnvImportance> of(const EnvMap& map);

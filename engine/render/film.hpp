@@ -2,6 +2,7 @@
 // Per-pixel accumulation over passes: a pass writes its per-pixel sums into a staging buffer (tiles own
 // disjoint pixels, so no locking), and only a finished pass is merged into the running totals.
 // image() may be called from another thread while a pass renders.
+#include <cstdint>
 #include <mutex>
 #include <vector>
 
@@ -12,6 +13,10 @@ namespace lp::render {
 class Film {
  public:
   Film(int width, int height);
+  // The bytes a film of width x height pixels holds.
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return width * height * 3 * int64_t(sizeof(float) + sizeof(double));
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -12,6 +12,10 @@ namespace lp {
 class AliasTable2D {
  public:
   explicit AliasTable2D(const PiecewiseConstant2D& dist);
+  // The bytes a table over width x height cells holds.
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return height * int64_t(sizeof(Entry)) + width * height * int64_t(sizeof(ColumnEntry));
+  }
 
   // r_row and r_col are independent uniform 64-bit integers; (fu, fv) the offsets within the cell.
   GridSample sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const;

@@ -24,6 +24,12 @@ class PiecewiseConstant2D {
   using RowFiller = std::function<void(int y, float* out)>;
   PiecewiseConstant2D(int width, int height, const RowFiller& fill_row);
 
+  // The bytes a distribution over width x height cells holds.
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return height * (int64_t(sizeof(double)) + 2 * int64_t(sizeof(float))) +
+           int64_t(sizeof(float)) * (2 * width + 1) * height;
+  }
+
   int width() const { return width_; }
   int height() const { return height_; }
 

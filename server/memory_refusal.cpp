@@ -1,0 +1,19 @@
+#include "server/memory_refusal.hpp"
+
+#include "server/router.hpp"
+
+namespace lp::server {
+
+void send_memory_refusal(httplib::Response& res, const MemoryBudgetError& error) {
+  if (error.transient()) {
+    res.set_header("Retry-After", std::to_string(kMemoryRetryAfterS));
+    send_error(res, 503, "memory_busy", std::string(error.what()) + "; retry later (--max-memory-mb)");
+  } else {
+    send_error(res, 507, "insufficient_memory",
+               std::string(error.what()) +
+                   "; delete maps or finished renders to make room, or start the server with a larger "
+                   "--max-memory-mb");
+  }
+}
+
+}  // namespace lp::server
