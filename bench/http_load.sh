@@ -33,8 +33,8 @@ measure() {
 all_runs() {
   local render=$1
   for c in 8 64 256; do
-    measure health "$render" "$base/api/v1/health" "$c" "$render"
-    measure samples "$render" "$base/api/v1/envmaps/default/samples" "$c" "$render" -s "$here/samples_post.lua"
+    measure health "$base/api/v1/health" "$c" "$render"
+    measure samples "$base/api/v1/envmaps/default/samples" "$c" "$render" -s "$here/samples_post.lua"
   done
 }
 
