@@ -9,3 +9,5 @@ for b in "$build"/bin/*_bench; do
 done
 echo "== samples endpoint"
 bash "$here/samples_endpoint.sh" "$build"
+echo "== http load"
+bash "$here/http_load.sh" "$build"

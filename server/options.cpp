@@ -41,6 +41,13 @@ Usage: lightprobe-server [options]
   --max-finished-jobs N  finished renders kept with their images, oldest dropped (default 64)
   --max-finished-mb N    MiB of images kept by finished renders, oldest dropped (default 1024)
   --max-event-streams N  concurrent render event streams (default 8)
+  --max-connections N    open connections at once; more are refused with 503 (default 1024)
+  --max-connections-per-client N
+                         open connections from one client address; more are refused with 503 (default 512)
+  --header-timeout-s N   seconds for a request line and its headers to arrive; then 408 (default 10)
+  --io-timeout-s N       seconds a body read or a response write may wait; then the connection closes (default 30)
+  --keep-alive-timeout-s N
+                         seconds an idle keep-alive connection stays open (default 5)
   --state-dir DIR        uploaded maps and render jobs kept across restarts (default ./lightprobe-state)
   --resume-interrupted   at start, resume the renders a crash or a stop interrupted
   --shutdown-grace-s N   on SIGTERM/SIGINT, seconds running renders get to finish their pass (default 10)
@@ -56,7 +63,8 @@ int64_t parse_count(const std::string& flag, const std::string& value, int64_t m
     if (used == value.size() && v >= min && v <= max) return v;
   } catch (const std::exception&) {
   }
-  throw std::invalid_argument(fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, min, max, value));
+  throw std::invalid_argument(
+      fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, min, max, value));
 }
 
 }  // namespace
@@ -131,6 +139,16 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.max_finished_mb = parse_count(flag, value(), 1, 1 << 24);
     } else if (flag == "--max-event-streams") {
       o.max_event_streams = int(parse_count(flag, value(), 0, 4096));
+    } else if (flag == "--max-connections") {
+      o.max_connections = int(parse_count(flag, value(), 1, 1 << 20));
+    } else if (flag == "--max-connections-per-client") {
+      o.max_connections_per_client = int(parse_count(flag, value(), 1, 1 << 20));
+    } else if (flag == "--header-timeout-s") {
+      o.header_timeout_s = int(parse_count(flag, value(), 1, 3600));
+    } else if (flag == "--io-timeout-s") {
+      o.io_timeout_s = int(parse_count(flag, value(), 1, 3600));
+    } else if (flag == "--keep-alive-timeout-s") {
+      o.keep_alive_timeout_s = int(parse_count(flag, value(), 1, 3600));
     } else if (flag == "--state-dir") {
       o.state_dir = value();
       if (o.state_dir.empty()) throw std::invalid_argument("--state-dir needs a directory");

@@ -38,7 +38,13 @@ struct Options {
   int max_queued_jobs = 16;
   int max_finished_jobs = 64;
   int64_t max_finished_mb = 1024;  // images kept by finished jobs
-  int max_event_streams = 8;       // concurrent GET .../events streams (each holds an HTTP worker)
+  int max_event_streams = 8;       // concurrent GET .../events streams
+  // Connections (server/http_transport.hpp).
+  int max_connections = 1024;            // open at once; more are refused with 503
+  int max_connections_per_client = 512;  // open at once from one client address; more are refused with 503
+  int header_timeout_s = 10;             // for a request line and its headers to arrive (else 408)
+  int io_timeout_s = 30;                 // longest wait of a body read or a response write
+  int keep_alive_timeout_s = 5;          // idle time before a keep-alive connection is closed
   // Lifecycle: what survives a restart, and how a stop ends the work in flight.
   std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
   bool resume_interrupted = false;                       // resume interrupted renders at start

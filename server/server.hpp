@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "server/app.hpp"
+#include "server/http_transport.hpp"
 #include "server/router.hpp"
 
 namespace lp::server {
@@ -20,9 +21,10 @@ class Server {
   void run();  // blocks until close_connections() (and the connections it closes) are done
 
   // Stopping, in two steps (the sequence is in shutdown.hpp); both are safe from any thread.
-  // New requests are refused (503 "shutting_down", connection closed); requests in flight go on.
+  // New connections are refused and idle ones closed; a request that arrives on an open connection gets
+  // 503 "shutting_down" (connection closed); requests in flight go on.
   void stop_accepting();
-  // Closes the listening socket and every connection; run() returns once their workers are done.
+  // Closes every connection at once (http_transport.hpp); run() returns once their threads are done.
   void close_connections();
 
   const Router& router() const { return router_; }
@@ -31,7 +33,7 @@ class Server {
   void mount_web_dir(const std::filesystem::path& dir);
 
   App& app_;
-  httplib::Server http_;
+  HttpTransport http_;
   Router router_;
   std::atomic<bool> accepting_{true};
 };

@@ -2,14 +2,14 @@
 // Starts the real lightprobe-server binary on a free loopback port (--port 0; the port is read
 // from the line the server prints on start) and stops it at the end of the test. Unless the flags name a
 // --state-dir, each server gets a fresh one of its own, removed at the end.
+#include <httplib.h>
+
 #include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <httplib.h>
 
 namespace lp::test {
 
@@ -22,6 +22,7 @@ class ServerProcess {
   ServerProcess& operator=(const ServerProcess&) = delete;
 
   int port() const { return port_; }
+  int pid() const { return pid_; }
   std::string base_url() const { return "http://127.0.0.1:" + std::to_string(port_); }
   // A client with generous timeouts, bound to this server.
   std::unique_ptr<httplib::Client> client() const;

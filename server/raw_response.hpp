@@ -1,0 +1,13 @@
+#pragma once
+// Responses the transport writes itself, before or instead of httplib: the JSON error shape, and the
+// connection closed after them.
+#include <string>
+
+namespace lp::server {
+
+// A complete HTTP/1.1 response with {"error":{"code":..,"message":..}} and Connection: close;
+// `extra_headers` are whole header lines, each ending in \r\n.
+std::string raw_error_response(int status, const std::string& code, const std::string& message,
+                               const std::string& extra_headers = {});
+
+}  // namespace lp::server
