@@ -1,5 +1,7 @@
 #include "server/server.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -8,8 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include <spdlog/spdlog.h>
-
+#include "server/method_policy.hpp"
 #include "server/routes.hpp"
 
 namespace lp::server {
@@ -20,7 +21,8 @@ thread_local Clock::time_point request_start;
 
 // Worker threads for connections; computation itself runs on oneTBB's pool.
 size_t http_worker_count(const Options& options) {
-  const int cores = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores =
+      options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   return size_t(std::max(16, 4 * cores));
 }
 
@@ -46,12 +48,18 @@ Server::Server(App& app) : app_(app), router_(http_) {
     spdlog::info("{} {} {} {:.1f} ms", req.method, req.path, res.status, ms);
   });
   // Responses httplib makes itself (no route, body too large, ...) get the JSON error shape too.
-  http_.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+  http_.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
-    if (res.status == 404) send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
-    else if (res.status == 413) send_error(res, 413, "payload_too_large", "the request body is over the server's limit (--max-upload-mb)");
-    else if (res.status == 405) send_error(res, 405, "method_not_allowed", "method not allowed");
-    else send_error(res, res.status, "bad_request", "the request could not be handled");
+    if ((res.status == 404 || res.status == 400) && refuse_method(router_, req, res)) return;
+    if (res.status == 404)
+      send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
+    else if (res.status == 413)
+      send_error(res, 413, "payload_too_large",
+                 "the request body is over the server's limit (--max-upload-mb)");
+    else if (res.status == 405)
+      send_error(res, 405, "method_not_allowed", "method not allowed");
+    else
+      send_error(res, res.status, "bad_request", "the request could not be handled");
   });
   http_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     std::string message = "internal error";
@@ -77,7 +85,8 @@ Server::Server(App& app) : app_(app), router_(http_) {
 void Server::mount_web_dir(const std::filesystem::path& dir) {
   if (dir.empty()) return;
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec) || !http_.set_mount_point("/", dir.string(), {{"Cache-Control", "no-cache"}})) {
+  if (!std::filesystem::is_directory(dir, ec) ||
+      !http_.set_mount_point("/", dir.string(), {{"Cache-Control", "no-cache"}})) {
     spdlog::warn("no dashboard: {} is not a readable directory (serving the API only)", dir.string());
     return;
   }
@@ -87,7 +96,8 @@ void Server::mount_web_dir(const std::filesystem::path& dir) {
 int Server::bind() {
   const auto& o = app_.options;
   errno = 0;
-  const int port = o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
+  const int port =
+      o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0)
     throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port) +
                              (errno ? std::string(": ") + std::strerror(errno) : std::string()));
@@ -95,10 +105,16 @@ int Server::bind() {
   return port;
 }
 
-void Server::run() { http_.listen_after_bind(); }
+void Server::run() {
+  http_.listen_after_bind();
+}
 
-void Server::stop_accepting() { accepting_.store(false); }
+void Server::stop_accepting() {
+  accepting_.store(false);
+}
 
-void Server::close_connections() { http_.stop(); }
+void Server::close_connections() {
+  http_.stop();
+}
 
 }  // namespace lp::server
