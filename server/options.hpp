@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <spdlog/common.h>
+
 namespace lp::server {
 
 struct Options {
@@ -21,6 +23,8 @@ struct Options {
   int64_t max_samples = 10'000'000;
   int64_t max_envmaps = 64;
   int64_t max_lights = 65536;
+  spdlog::level::level_enum log_level = spdlog::level::info;  // least severe messages written
+  int64_t access_log_sample = 1;                              // log 1 request in N (0: none; 5xx always)
   bool list_routes = false;  // print "METHOD PATH" per registered route and exit
   // Renders (POST /api/v1/renders).
   int max_render_width = 4096;

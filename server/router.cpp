@@ -1,9 +1,9 @@
 #include "server/router.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <regex>
+
+#include <spdlog/spdlog.h>
 
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
@@ -18,8 +18,7 @@ std::string to_regex(const std::string& path) {
   std::string out;
   size_t last = 0;
   for (std::sregex_iterator it(path.begin(), path.end(), param), end; it != end; ++it) {
-    out += std::regex_replace(path.substr(last, size_t(it->position()) - last),
-                              std::regex(R"([.^$|()\[\]*+?\\])"), R"(\$&)");
+    out += std::regex_replace(path.substr(last, size_t(it->position()) - last), std::regex(R"([.^$|()\[\]*+?\\])"), R"(\$&)");
     out += "([^/]+)";
     last = size_t(it->position() + it->length());
   }
@@ -29,36 +28,24 @@ std::string to_regex(const std::string& path) {
 
 int status_for(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::InvalidArgument:
-      return 400;
-    case ErrorKind::Unsupported:
-      return 415;
-    case ErrorKind::Corrupt:
-      return 422;
-    case ErrorKind::InvalidData:
-      return 422;
-    case ErrorKind::TooLarge:
-      return 413;
-    case ErrorKind::NotFound:
-      return 404;
+    case ErrorKind::InvalidArgument: return 400;
+    case ErrorKind::Unsupported: return 415;
+    case ErrorKind::Corrupt: return 422;
+    case ErrorKind::InvalidData: return 422;
+    case ErrorKind::TooLarge: return 413;
+    case ErrorKind::NotFound: return 404;
   }
   return 500;
 }
 
 const char* code_for(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::InvalidArgument:
-      return "invalid_argument";
-    case ErrorKind::Unsupported:
-      return "unsupported_media_type";
-    case ErrorKind::Corrupt:
-      return "corrupt_image";
-    case ErrorKind::InvalidData:
-      return "invalid_image_data";
-    case ErrorKind::TooLarge:
-      return "too_large";
-    case ErrorKind::NotFound:
-      return "not_found";
+    case ErrorKind::InvalidArgument: return "invalid_argument";
+    case ErrorKind::Unsupported: return "unsupported_media_type";
+    case ErrorKind::Corrupt: return "corrupt_image";
+    case ErrorKind::InvalidData: return "invalid_image_data";
+    case ErrorKind::TooLarge: return "too_large";
+    case ErrorKind::NotFound: return "not_found";
   }
   return "internal";
 }
@@ -88,8 +75,7 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler) {
   return [handler = guarded(std::move(handler))](const httplib::Request& req, httplib::Response& res,
                                                  const httplib::ContentReader& reader) {
     if (req.is_multipart_form_data()) {
-      send_error(res, 415, "unsupported_media_type",
-                 "send the file as the raw request body, not as multipart/form-data");
+      send_error(res, 415, "unsupported_media_type", "send the file as the raw request body, not as multipart/form-data");
       return;
     }
     httplib::Request with = req;
@@ -98,11 +84,8 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler) {
       return true;
     });
     if (!complete) {
-      if (res.status == 413)
-        send_error(res, 413, "payload_too_large",
-                   "the request body is over the server's limit (--max-upload-mb)");
-      else
-        send_error(res, 400, "bad_request", "the request body could not be read");
+      if (res.status == 413) send_error(res, 413, "payload_too_large", "the request body is over the server's limit (--max-upload-mb)");
+      else send_error(res, 400, "bad_request", "the request body could not be read");
       return;
     }
     handler(with, res);
@@ -123,23 +106,14 @@ void Router::add(const std::string& method, const std::string& path, Handler han
   const std::string pattern = to_regex(path);
   routes_.push_back({method, path, std::regex(pattern)});
   handler = with_query_policy(QueryPolicy(method, path), std::move(handler));
-  if (method == "GET")
-    server_.Get(pattern, guarded(std::move(handler)));
-  else if (method == "POST")
-    server_.Post(pattern, with_body(std::move(handler)));
-  else if (method == "DELETE")
-    server_.Delete(pattern, guarded(std::move(handler)));
+  if (method == "GET") server_.Get(pattern, guarded(std::move(handler)));
+  else if (method == "POST") server_.Post(pattern, with_body(std::move(handler)));
+  else if (method == "DELETE") server_.Delete(pattern, guarded(std::move(handler)));
 }
 
-void Router::get(const std::string& path, Handler handler) {
-  add("GET", path, std::move(handler));
-}
-void Router::post(const std::string& path, Handler handler) {
-  add("POST", path, std::move(handler));
-}
-void Router::del(const std::string& path, Handler handler) {
-  add("DELETE", path, std::move(handler));
-}
+void Router::get(const std::string& path, Handler handler) { add("GET", path, std::move(handler)); }
+void Router::post(const std::string& path, Handler handler) { add("POST", path, std::move(handler)); }
+void Router::del(const std::string& path, Handler handler) { add("DELETE", path, std::move(handler)); }
 
 std::vector<std::string> Router::methods_for(const std::string& request_path) const {
   std::vector<std::string> methods;

@@ -3,13 +3,13 @@
 // keeps the list of routes (checked against api/openapi.yaml by a test), refuses query parameters the
 // document does not declare for the operation (server/query_policy.hpp), and turns every exception
 // into a JSON error response so that no request can take the server down.
-#include <httplib.h>
-
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
 #include <vector>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
 
 namespace lp::server {
 

@@ -1,14 +1,13 @@
 #include "server/server.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
+
+#include <spdlog/spdlog.h>
 
 #include "server/method_policy.hpp"
 #include "server/routes.hpp"
@@ -16,50 +15,37 @@
 namespace lp::server {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-thread_local Clock::time_point request_start;
-
 // Worker threads for connections; computation itself runs on oneTBB's pool.
 size_t http_worker_count(const Options& options) {
-  const int cores =
-      options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   return size_t(std::max(16, 4 * cores));
 }
 
 }  // namespace
 
-Server::Server(App& app) : app_(app), router_(http_) {
+Server::Server(App& app) : app_(app), router_(http_), access_log_(app.options.access_log_sample) {
   http_.new_task_queue = [n = http_worker_count(app.options)] { return new httplib::ThreadPool(n); };
   http_.set_payload_max_length(size_t(app.options.max_upload_mb) * 1024 * 1024);
   http_.set_read_timeout(60);
   http_.set_write_timeout(60);
   http_.set_keep_alive_max_count(1000);
 
-  // A request is handled start to end on one worker thread, so its start time can live there.
   http_.set_pre_routing_handler([this](const httplib::Request&, httplib::Response& res) {
-    request_start = Clock::now();
+    AccessLog::start_request();
     if (accepting_.load()) return httplib::Server::HandlerResponse::Unhandled;
     res.set_header("Connection", "close");
     send_error(res, 503, "shutting_down", "the server is shutting down");
     return httplib::Server::HandlerResponse::Handled;
   });
-  http_.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - request_start).count();
-    spdlog::info("{} {} {} {:.1f} ms", req.method, req.path, res.status, ms);
-  });
+  http_.set_logger(
+      [this](const httplib::Request& req, const httplib::Response& res) { access_log_.record(req, res); });
   // Responses httplib makes itself (no route, body too large, ...) get the JSON error shape too.
   http_.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
     if ((res.status == 404 || res.status == 400) && refuse_method(router_, req, res)) return;
-    if (res.status == 404)
-      send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
-    else if (res.status == 413)
-      send_error(res, 413, "payload_too_large",
-                 "the request body is over the server's limit (--max-upload-mb)");
-    else if (res.status == 405)
-      send_error(res, 405, "method_not_allowed", "method not allowed");
-    else
-      send_error(res, res.status, "bad_request", "the request could not be handled");
+    if (res.status == 404) send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
+    else if (res.status == 413) send_error(res, 413, "payload_too_large", "the request body is over the server's limit (--max-upload-mb)");
+    else send_error(res, res.status, "bad_request", "the request could not be handled");
   });
   http_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     std::string message = "internal error";
@@ -85,8 +71,7 @@ Server::Server(App& app) : app_(app), router_(http_) {
 void Server::mount_web_dir(const std::filesystem::path& dir) {
   if (dir.empty()) return;
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec) ||
-      !http_.set_mount_point("/", dir.string(), {{"Cache-Control", "no-cache"}})) {
+  if (!std::filesystem::is_directory(dir, ec) || !http_.set_mount_point("/", dir.string(), {{"Cache-Control", "no-cache"}})) {
     spdlog::warn("no dashboard: {} is not a readable directory (serving the API only)", dir.string());
     return;
   }
@@ -96,8 +81,7 @@ void Server::mount_web_dir(const std::filesystem::path& dir) {
 int Server::bind() {
   const auto& o = app_.options;
   errno = 0;
-  const int port =
-      o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
+  const int port = o.port == 0 ? http_.bind_to_any_port(o.host) : (http_.bind_to_port(o.host, o.port) ? o.port : -1);
   if (port <= 0)
     throw std::runtime_error("cannot listen on " + o.host + ":" + std::to_string(o.port) +
                              (errno ? std::string(": ") + std::strerror(errno) : std::string()));
@@ -105,16 +89,10 @@ int Server::bind() {
   return port;
 }
 
-void Server::run() {
-  http_.listen_after_bind();
-}
+void Server::run() { http_.listen_after_bind(); }
 
-void Server::stop_accepting() {
-  accepting_.store(false);
-}
+void Server::stop_accepting() { accepting_.store(false); }
 
-void Server::close_connections() {
-  http_.stop();
-}
+void Server::close_connections() { http_.stop(); }
 
 }  // namespace lp::server

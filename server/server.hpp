@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "server/access_log.hpp"
 #include "server/app.hpp"
 #include "server/router.hpp"
 
@@ -33,6 +34,7 @@ class Server {
   App& app_;
   httplib::Server http_;
   Router router_;
+  AccessLog access_log_;
   std::atomic<bool> accepting_{true};
 };
 
