@@ -2,23 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <limits>
 
 #include "api/api_error.hpp"
 
 namespace lp::api {
 namespace {
-
-const std::vector<std::string> kKnown = {"eta_i", "eta_t", "metal", "eta", "k", "step", "format"};
-
-void reject_unknown_or_repeated(const Query& q) {
-  for (const auto& [name, value] : q) {
-    if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end())
-      throw invalid_field(name, "unknown parameter (expected one of: " + join(kKnown, ", ") + ")");
-    if (q.count(name) > 1) throw invalid_field(name, "given more than once");
-  }
-}
 
 bool given(const Query& q, const std::string& name) {
   return query_string(q, name).value_or("") != "";
@@ -67,7 +56,6 @@ ConductorSpec parse_conductor(const Query& q) {
 }  // namespace
 
 FresnelRequest parse_fresnel_query(const Query& q) {
-  reject_unknown_or_repeated(q);
   FresnelRequest r;
   r.csv = query_enum(q, "format", "json", {"json", "csv"}) == "csv";
   r.step = number(q, "step", 1.0, kMinStep, 90.0);

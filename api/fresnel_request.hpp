@@ -27,8 +27,9 @@ inline constexpr double kMinIndex = 1e-3;
 inline constexpr double kMaxIndex = 1000.0;
 inline constexpr double kMinStep = 0.01;
 
-// Throws ApiError 400 "invalid_field" naming the parameter: unknown or repeated, missing, not a finite
-// number, out of range, an unknown metal, or a mix of dielectric and conductor parameters.
+// Throws ApiError 400 "invalid_field" naming the parameter: missing, not a finite number, out of range,
+// an unknown metal, or a mix of dielectric and conductor parameters. (Unknown and repeated parameters
+// are refused for every endpoint by the server's query policy.)
 FresnelRequest parse_fresnel_query(const Query& q);
 
 }  // namespace lp::api

@@ -1,4 +1,5 @@
 // lightprobe-server: loads environment maps and answers HTTP/JSON requests about them.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
@@ -63,6 +64,17 @@ bool prepare(lp::server::App& app, lp::server::Server& server, int& port) {
   return true;
 }
 
+// The address is logged, and printed on stdout when the log level hides it: with --port 0 it is how
+// a process manager or a test learns the port.
+void announce_listening(const std::string& host, int port) {
+  const std::string line =
+      fmt::format("lightprobe-server {} listening on http://{}:{}", LIGHTPROBE_VERSION, host, port);
+  if (spdlog::should_log(spdlog::level::info))
+    spdlog::info("{}", line);
+  else
+    std::cout << line << std::endl;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,6 +91,7 @@ int main(int argc, char** argv) {
   }
   if (!options) return 0;
   spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
+  spdlog::set_level(options->log_level);
   std::optional<tbb::global_control> threads;
   if (options->threads > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options->threads));
@@ -94,7 +107,7 @@ int main(int argc, char** argv) {
 
   std::promise<void> run_returned;
   auto signals = stop_on_signal(stop_signals, app, server, run_returned.get_future().share());
-  spdlog::info("lightprobe-server {} listening on http://{}:{}", LIGHTPROBE_VERSION, options->host, port);
+  announce_listening(options->host, port);
   server.run();
   run_returned.set_value();
   pthread_kill(signals.native_handle(), SIGTERM);  // if run() ended by itself, the sequence still runs

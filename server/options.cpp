@@ -1,12 +1,13 @@
 #include "server/options.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
+#include "server/log_level.hpp"
 #include "server/machine_memory.hpp"
 
 namespace lp::server {
@@ -51,6 +52,9 @@ Usage: lightprobe-server [options]
   --state-dir DIR        uploaded maps and render jobs kept across restarts (default ./lightprobe-state)
   --resume-interrupted   at start, resume the renders a crash or a stop interrupted
   --shutdown-grace-s N   on SIGTERM/SIGINT, seconds running renders get to finish their pass (default 10)
+  --log-level NAME       least severe messages written: {levels} (default info)
+  --access-log-sample N  access log: one line per N requests at info level, 0 for none; a 5xx answer
+                         is always logged, at error level (default 1: every request)
   --list-routes          print every registered route (METHOD PATH) and exit
   --version              print the version and exit
   --help                 print this help and exit
@@ -82,11 +86,15 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       return argv[++i];
     };
     if (flag == "--help" || flag == "-h") {
-      std::cout << kUsage;
+      std::cout << fmt::format(fmt::runtime(kUsage), fmt::arg("levels", log_level_names()));
       return std::nullopt;
     } else if (flag == "--version") {
       std::cout << "lightprobe-server " << LIGHTPROBE_VERSION << "\n";
       return std::nullopt;
+    } else if (flag == "--log-level") {
+      o.log_level = parse_log_level(value());
+    } else if (flag == "--access-log-sample") {
+      o.access_log_sample = parse_count(flag, value(), 0, int64_t{1} << 40);
     } else if (flag == "--list-routes") {
       o.list_routes = true;
     } else if (flag == "--host") {

@@ -1,5 +1,7 @@
 #pragma once
 // Command-line options of lightprobe-server.
+#include <spdlog/common.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -26,6 +28,8 @@ struct Options {
   int64_t max_lights = 65536;
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
   int64_t max_memory_mb = default_max_memory_mb();
+  spdlog::level::level_enum log_level = spdlog::level::info;  // least severe messages written
+  int64_t access_log_sample = 1;                              // log 1 request in N (0: none; 5xx always)
   bool list_routes = false;  // print "METHOD PATH" per registered route and exit
   // Renders (POST /api/v1/renders).
   int max_render_width = 4096;

@@ -2,12 +2,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <regex>
 
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
 #include "server/http_transport.hpp"
 #include "server/memory_refusal.hpp"
+#include "server/query_policy.hpp"
 
 namespace lp::server {
 namespace {
@@ -110,11 +112,20 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler) {
   };
 }
 
+Handler with_query_policy(QueryPolicy policy, Handler handler) {
+  return [policy = std::move(policy), handler = std::move(handler)](const httplib::Request& req,
+                                                                    httplib::Response& res) {
+    policy.check(req.params);
+    handler(req, res);
+  };
+}
+
 }  // namespace
 
 void Router::add(const std::string& method, const std::string& path, Handler handler) {
-  routes_.push_back({method, path});
   const std::string pattern = to_regex(path);
+  routes_.push_back({method, path, std::regex(pattern)});
+  handler = with_query_policy(QueryPolicy(method, path), std::move(handler));
   if (method == "GET")
     server_.Get(pattern, guarded(std::move(handler)));
   else if (method == "POST")
@@ -131,6 +142,15 @@ void Router::post(const std::string& path, Handler handler) {
 }
 void Router::del(const std::string& path, Handler handler) {
   add("DELETE", path, std::move(handler));
+}
+
+std::vector<std::string> Router::methods_for(const std::string& request_path) const {
+  std::vector<std::string> methods;
+  for (const auto& route : routes_)
+    if (std::regex_match(request_path, route.pattern) &&
+        std::find(methods.begin(), methods.end(), route.method) == methods.end())
+      methods.push_back(route.method);
+  return methods;
 }
 
 std::string path_param(const httplib::Request& req, size_t n) {

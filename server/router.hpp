@@ -1,19 +1,22 @@
 #pragma once
 // Registers handlers on the httplib server under OpenAPI-style paths ("/api/v1/envmaps/{id}"),
-// keeps the list of routes (checked against api/openapi.yaml by a test), and turns every exception
+// keeps the list of routes (checked against api/openapi.yaml by a test), refuses query parameters the
+// document does not declare for the operation (server/query_policy.hpp), and turns every exception
 // into a JSON error response so that no request can take the server down.
+#include <httplib.h>
+
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 #include <vector>
-
-#include <httplib.h>
-#include <nlohmann/json.hpp>
 
 namespace lp::server {
 
 struct Route {
   std::string method;
-  std::string path;  // OpenAPI form
+  std::string path;    // OpenAPI form
+  std::regex pattern;  // what httplib matches request paths against
 };
 
 using Handler = std::function<void(const httplib::Request&, httplib::Response&)>;
@@ -27,6 +30,8 @@ class Router {
   void del(const std::string& path, Handler handler);
 
   const std::vector<Route>& routes() const { return routes_; }
+  // The methods registered for the routes matching a request path, in registration order.
+  std::vector<std::string> methods_for(const std::string& request_path) const;
 
  private:
   void add(const std::string& method, const std::string& path, Handler handler);

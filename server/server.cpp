@@ -2,16 +2,13 @@
 
 #include <spdlog/spdlog.h>
 
-#include <chrono>
 #include <filesystem>
 
+#include "server/method_policy.hpp"
 #include "server/routes.hpp"
 
 namespace lp::server {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-thread_local Clock::time_point request_start;
 
 TransportLimits transport_limits(const Options& o) {
   return {o.max_connections,
@@ -24,24 +21,27 @@ TransportLimits transport_limits(const Options& o) {
 
 }  // namespace
 
-Server::Server(App& app) : app_(app), http_(transport_limits(app.options)), router_(http_) {
+Server::Server(App& app)
+    : app_(app),
+      http_(transport_limits(app.options)),
+      router_(http_),
+      access_log_(app.options.access_log_sample) {
   http_.set_keep_alive_max_count(1000);
 
-  // A request is handled start to end on one worker thread, so its start time can live there.
   http_.set_pre_routing_handler([this](const httplib::Request&, httplib::Response& res) {
-    request_start = Clock::now();
+    AccessLog::start_request();
     if (accepting_.load()) return httplib::Server::HandlerResponse::Unhandled;
     res.set_header("Connection", "close");
     send_error(res, 503, "shutting_down", "the server is shutting down");
     return httplib::Server::HandlerResponse::Handled;
   });
-  http_.set_logger([](const httplib::Request& req, const httplib::Response& res) {
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - request_start).count();
-    spdlog::info("{} {} {} {:.1f} ms", req.method, req.path, res.status, ms);
-  });
+  http_.set_logger(
+      [this](const httplib::Request& req, const httplib::Response& res) { access_log_.record(req, res); });
   // Responses httplib makes itself (no route, body too large, ...) get the JSON error shape too.
-  http_.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+  http_.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
+    if ((res.status == 404 || res.status == 400 || res.status == 405) && refuse_method(router_, req, res))
+      return;
     if (res.status == 404)
       send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
     else if (res.status == 413)

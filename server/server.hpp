@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "server/access_log.hpp"
 #include "server/app.hpp"
 #include "server/http_transport.hpp"
 #include "server/router.hpp"
@@ -35,6 +36,7 @@ class Server {
   App& app_;
   HttpTransport http_;
   Router router_;
+  AccessLog access_log_;
   std::atomic<bool> accepting_{true};
 };
 

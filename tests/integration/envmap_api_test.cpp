@@ -1,16 +1,16 @@
 // The envmap and sampling endpoints over real HTTP against the real server binary.
+#include <gtest/gtest.h>
 #include <stb_image.h>
 
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <sstream>
-
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
+#include "support/routes.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -36,8 +36,8 @@ void expect_error(const httplib::Result& r, int status, const std::string& menti
 }
 
 httplib::Result upload(httplib::Client& c, const std::string& name, const std::vector<uint8_t>& bytes) {
-  return c.Post(("/api/v1/envmaps?name=" + name).c_str(), reinterpret_cast<const char*>(bytes.data()), bytes.size(),
-                "application/octet-stream");
+  return c.Post(("/api/v1/envmaps?name=" + name).c_str(), reinterpret_cast<const char*>(bytes.data()),
+                bytes.size(), "application/octet-stream");
 }
 
 struct DecodedPng {
@@ -48,8 +48,8 @@ struct DecodedPng {
 DecodedPng decode_png(const std::string& body) {
   DecodedPng png;
   int n = 0;
-  unsigned char* p = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(body.data()), int(body.size()),
-                                           &png.width, &png.height, &n, 3);
+  unsigned char* p = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(body.data()),
+                                           int(body.size()), &png.width, &png.height, &n, 3);
   if (p) png.rgb.assign(p, p + size_t(png.width) * size_t(png.height) * 3);
   stbi_image_free(p);
   return png;
@@ -63,7 +63,8 @@ TEST(EnvMapApi, HealthAndListOfPreloadedMaps) {
   const json list = body_json(c->Get("/api/v1/envmaps"));
   std::set<std::string> ids;
   for (const auto& m : list["envmaps"]) ids.insert(m["id"]);
-  for (const char* id : {"forest_exr", "forest_pfm", "studio_hdr", "city_exr", "sunrise_exr"}) EXPECT_TRUE(ids.count(id)) << id;
+  for (const char* id : {"forest_exr", "forest_pfm", "studio_hdr", "city_exr", "sunrise_exr"})
+    EXPECT_TRUE(ids.count(id)) << id;
 }
 
 TEST(EnvMapApi, UploadsOfEveryFormatGiveTheSameMetadataAsTheEngine) {
@@ -84,7 +85,8 @@ TEST(EnvMapApi, UploadsOfEveryFormatGiveTheSameMetadataAsTheEngine) {
     const Image img = read_image_file(test::envmap_path(file)).image;
     double power_r = 0;
     for (int y = 0; y < img.height(); ++y) {
-      const double omega = (2 * M_PI / img.width()) * (std::cos(M_PI * y / img.height()) - std::cos(M_PI * (y + 1) / img.height()));
+      const double omega = (2 * M_PI / img.width()) *
+                           (std::cos(M_PI * y / img.height()) - std::cos(M_PI * (y + 1) / img.height()));
       for (int x = 0; x < img.width(); ++x) power_r += img.at(x, y).x * omega;
     }
     EXPECT_NEAR(m["power"][0].get<double>(), power_r, 1e-5 * power_r) << file;
@@ -98,8 +100,8 @@ TEST(EnvMapApi, CurlStyleUploadWithoutContentTypeWorks) {
   auto c = shared_server().client();
   const auto bytes = test::read_bytes(test::envmap_path("forest.pfm"));
   // curl --data-binary sends application/x-www-form-urlencoded unless told otherwise.
-  auto r = c->Post("/api/v1/envmaps?name=curl_style", reinterpret_cast<const char*>(bytes.data()), bytes.size(),
-                   "application/x-www-form-urlencoded");
+  auto r = c->Post("/api/v1/envmaps?name=curl_style", reinterpret_cast<const char*>(bytes.data()),
+                   bytes.size(), "application/x-www-form-urlencoded");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 201) << r->body;
   c->Delete("/api/v1/envmaps/curl_style");
@@ -107,19 +109,29 @@ TEST(EnvMapApi, CurlStyleUploadWithoutContentTypeWorks) {
 
 TEST(EnvMapApi, LoadByPathInsideTheDataDirOnly) {
   auto c = shared_server().client();
-  auto r = c->Post("/api/v1/envmaps", R"({"name":"by_path","path":"envmaps/sunrise.exr"})", "application/json");
+  auto r =
+      c->Post("/api/v1/envmaps", R"({"name":"by_path","path":"envmaps/sunrise.exr"})", "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 201) << r->body;
   EXPECT_EQ(json::parse(r->body)["format"], "exr");
   c->Delete("/api/v1/envmaps/by_path");
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"../seeds/x.exr"})", "application/json"), 400, "path");
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"/etc/passwd"})", "application/json"), 400, "path");
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/../../x"})", "application/json"), 400, "path");
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/none.exr"})", "application/json"), 404);
-  expect_error(c->Post("/api/v1/envmaps", R"({"path":"envmaps/forest.exr"})", "application/json"), 400, "name");
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/forest.exr","extra":1})", "application/json"), 400, "extra");
+  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"../seeds/x.exr"})", "application/json"), 400,
+               "path");
+  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"/etc/passwd"})", "application/json"), 400,
+               "path");
+  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/../../x"})", "application/json"),
+               400, "path");
+  expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/none.exr"})", "application/json"),
+               404);
+  expect_error(c->Post("/api/v1/envmaps", R"({"path":"envmaps/forest.exr"})", "application/json"), 400,
+               "name");
+  expect_error(
+      c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/forest.exr","extra":1})", "application/json"),
+      400, "extra");
   expect_error(c->Post("/api/v1/envmaps", R"({"name":"x", "path":)", "application/json"), 400);
-  expect_error(c->Post("/api/v1/envmaps", R"({"name":"bad/name","path":"envmaps/forest.exr"})", "application/json"), 400, "name");
+  expect_error(
+      c->Post("/api/v1/envmaps", R"({"name":"bad/name","path":"envmaps/forest.exr"})", "application/json"),
+      400, "name");
 }
 
 TEST(EnvMapApi, BadUploadsAreRefusedAndLeaveLoadedMapsAlone) {
@@ -129,7 +141,8 @@ TEST(EnvMapApi, BadUploadsAreRefusedAndLeaveLoadedMapsAlone) {
   auto exr = test::read_bytes(test::envmap_path("forest.exr"));
   exr.resize(exr.size() / 3);
   expect_error(upload(*c, "truncated", exr), 422);
-  const std::string nan_pfm = std::string("PF\n1 1\n-1.0\n") + std::string("\x00\x00\xc0\x7f\x00\x00\x80\x3f\x00\x00\x80\x3f", 12);
+  const std::string nan_pfm =
+      std::string("PF\n1 1\n-1.0\n") + std::string("\x00\x00\xc0\x7f\x00\x00\x80\x3f\x00\x00\x80\x3f", 12);
   // One NaN pixel: black under the default policy, which leaves nothing to sample; named under reject.
   expect_error(upload(*c, "nan", std::vector<uint8_t>(nan_pfm.begin(), nan_pfm.end())), 422, "no energy");
   expect_error(upload(*c, "nan&invalid=reject", std::vector<uint8_t>(nan_pfm.begin(), nan_pfm.end())), 422,
@@ -138,7 +151,8 @@ TEST(EnvMapApi, BadUploadsAreRefusedAndLeaveLoadedMapsAlone) {
   expect_error(upload(*c, "", test::read_bytes(test::envmap_path("studio.hdr"))), 400, "name");
   expect_error(c->Post("/api/v1/envmaps?name=empty", "", "application/octet-stream"), 400);
   EXPECT_EQ(body_json(c->Get("/api/v1/envmaps/forest_exr")), before);
-  for (const char* id : {"garbage", "truncated", "nan", "empty"}) EXPECT_EQ(c->Get((std::string("/api/v1/envmaps/") + id).c_str())->status, 404);
+  for (const char* id : {"garbage", "truncated", "nan", "empty"})
+    EXPECT_EQ(c->Get((std::string("/api/v1/envmaps/") + id).c_str())->status, 404);
   EXPECT_TRUE(shared_server().alive());
 }
 
@@ -162,7 +176,8 @@ TEST(EnvMapApi, ImageInEveryFormat) {
     ASSERT_EQ(r->status, 200);
     const Image back = read_image(std::vector<uint8_t>(r->body.begin(), r->body.end())).image;
     ASSERT_EQ(back.data().size(), original.data().size());
-    EXPECT_EQ(std::memcmp(back.data().data(), original.data().data(), original.data().size() * 4), 0) << format;
+    EXPECT_EQ(std::memcmp(back.data().data(), original.data().data(), original.data().size() * 4), 0)
+        << format;
   }
   auto png = c->Get("/api/v1/envmaps/forest_pfm/image?format=png&exposure=1&gamma=2.2");
   ASSERT_EQ(png->status, 200);
@@ -178,7 +193,8 @@ TEST(EnvMapApi, ImageInEveryFormat) {
 TEST(EnvMapApi, DistributionWithAndWithoutSinWeight) {
   auto c = shared_server().client();
   const json w = body_json(c->Get("/api/v1/envmaps/forest_exr/distribution"));
-  const json u = body_json(c->Get("/api/v1/envmaps/forest_exr/distribution?sin_weight=false&luminance=rec709"));
+  const json u =
+      body_json(c->Get("/api/v1/envmaps/forest_exr/distribution?sin_weight=false&luminance=rec709"));
   for (const json* j : {&w, &u}) {
     EXPECT_EQ((*j)["height"], 512);
     ASSERT_EQ((*j)["row_luminance"].size(), 512u);
@@ -201,7 +217,8 @@ TEST(EnvMapApi, DistributionWithAndWithoutSinWeight) {
 TEST(EnvMapApi, SamplesAsJsonAreReproducibleAndConsistent) {
   auto c = shared_server().client();
   for (const char* strategy : {"independent", "stratified", "sobol"}) {
-    const std::string req = std::string(R"({"count":1000,"seed":7,"strategy":")") + strategy + R"(","luminance":"rec709"})";
+    const std::string req =
+        std::string(R"({"count":1000,"seed":7,"strategy":")") + strategy + R"(","luminance":"rec709"})";
     const json a = body_json(c->Post("/api/v1/envmaps/city_exr/samples", req, "application/json"));
     const json b = body_json(c->Post("/api/v1/envmaps/city_exr/samples", req, "application/json"));
     ASSERT_EQ(a["count"], 1000);
@@ -245,7 +262,8 @@ TEST(EnvMapApi, BinarySamplesMatchTheJsonOnes) {
 TEST(EnvMapApi, LargeBinaryRequestStreams) {
   auto c = shared_server().client();
   httplib::Headers accept = {{"Accept", "application/octet-stream"}};
-  auto r = c->Post("/api/v1/envmaps/sunrise_exr/samples", accept, R"({"count":1000000,"seed":1})", "application/json");
+  auto r = c->Post("/api/v1/envmaps/sunrise_exr/samples", accept, R"({"count":1000000,"seed":1})",
+                   "application/json");
   ASSERT_EQ(r->status, 200);
   EXPECT_EQ(r->body.size(), 1000000u * 52);
 }
@@ -269,7 +287,8 @@ TEST(EnvMapApi, SampleRequestErrorsNameTheField) {
 
 TEST(EnvMapApi, SamplePicturesShowWhereSamplesFell) {
   auto c = shared_server().client();
-  const json j = body_json(c->Post("/api/v1/envmaps/forest_exr/samples", R"({"count":64,"seed":5})", "application/json"));
+  const json j = body_json(
+      c->Post("/api/v1/envmaps/forest_exr/samples", R"({"count":64,"seed":5})", "application/json"));
   auto marks = c->Get("/api/v1/envmaps/forest_exr/samples.png?count=64&seed=5&style=marks");
   ASSERT_EQ(marks->status, 200);
   const DecodedPng m = decode_png(marks->body);
@@ -294,8 +313,10 @@ TEST(EnvMapApi, SamplePicturesShowWhereSamplesFell) {
     for (int x = 0; x < 1024; ++x) {
       const uint8_t* p = &w.rgb[(size_t(y) * 1024 + x) * 3];
       const bool black = p[0] == 0 && p[1] == 0 && p[2] == 0;
-      if (!near_sample.count({x, y})) ASSERT_TRUE(black) << x << "," << y;
-      else lit += !black;
+      if (!near_sample.count({x, y}))
+        ASSERT_TRUE(black) << x << "," << y;
+      else
+        lit += !black;
     }
   EXPECT_GT(lit, 64u);
   expect_error(c->Get("/api/v1/envmaps/forest_exr/samples.png?style=dots"), 400, "style");
@@ -307,7 +328,8 @@ TEST(EnvMapApi, LimitsFromFlags) {
   auto c = server.client();
   expect_error(upload(*c, "big", test::read_bytes(test::envmap_path("forest.pfm"))), 413);  // 6 MB body
   expect_error(upload(*c, "many", test::read_bytes(test::envmap_path("forest.exr"))), 413, "pixels");
-  expect_error(c->Post("/api/v1/envmaps/default/samples", R"({"count":101})", "application/json"), 400, "count");
+  expect_error(c->Post("/api/v1/envmaps/default/samples", R"({"count":101})", "application/json"), 400,
+               "count");
   EXPECT_EQ(c->Post("/api/v1/envmaps/default/samples", R"({"count":100})", "application/json")->status, 200);
   EXPECT_TRUE(server.alive());
 }
@@ -318,18 +340,13 @@ TEST(EnvMapApi, DefaultMapWithoutLoadFlags) {
   const json m = body_json(c->Get("/api/v1/envmaps/default"));
   EXPECT_EQ(m["format"], "procedural");
   EXPECT_GT(m["power"][0].get<double>(), 0);
-  EXPECT_EQ(c->Post("/api/v1/envmaps", R"({"name":"x","path":"a.exr"})", "application/json")->status, 400);  // no --data-dir
+  EXPECT_EQ(c->Post("/api/v1/envmaps", R"({"name":"x","path":"a.exr"})", "application/json")->status,
+            400);  // no --data-dir
 }
 
 // Every route the server registers is documented in api/openapi.yaml.
 TEST(OpenApi, EveryRegisteredRouteIsDocumented) {
-  const std::string cmd = std::string(LIGHTPROBE_SERVER_BIN) + " --list-routes";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  ASSERT_TRUE(pipe);
-  std::vector<std::pair<std::string, std::string>> routes;
-  char method[16], path[512];
-  while (fscanf(pipe, "%15s %511s", method, path) == 2) routes.emplace_back(method, path);
-  ASSERT_EQ(pclose(pipe), 0);
+  const std::vector<test::ListedRoute> routes = test::registered_routes();
   ASSERT_GE(routes.size(), 8u);
   std::ifstream in(LIGHTPROBE_OPENAPI);
   std::vector<std::string> lines;
@@ -339,7 +356,8 @@ TEST(OpenApi, EveryRegisteredRouteIsDocumented) {
     auto it = std::find(lines.begin(), lines.end(), "  " + p + ":");
     ASSERT_NE(it, lines.end()) << p << " is not under paths";
     bool found = false;
-    for (++it; it != lines.end() && (it->rfind("    ", 0) == 0 || it->empty()); ++it) found |= *it == "    " + m + ":";
+    for (++it; it != lines.end() && (it->rfind("    ", 0) == 0 || it->empty()); ++it)
+      found |= *it == "    " + m + ":";
     EXPECT_TRUE(found) << m << " " << p << " is not documented";
   }
   // And the document is served.

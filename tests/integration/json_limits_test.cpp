@@ -17,16 +17,11 @@ namespace {
 
 using test::Reply;
 
-test::ServerProcess& server() {
-  static test::ServerProcess process;
-  return process;
-}
-
 Reply post_json(const std::string& path, const std::string& body) {
-  return test::reply(server().client()->Post(path.c_str(), body, "application/json"));
+  return test::reply(test::default_server().client()->Post(path.c_str(), body, "application/json"));
 }
 Reply get(const std::string& path) {
-  return test::reply(server().client()->Get(path.c_str()));
+  return test::reply(test::default_server().client()->Get(path.c_str()));
 }
 
 std::string arrays(int depth) {
@@ -56,7 +51,7 @@ TEST(JsonLimits, HundredThousandLevelsGet400FromEveryJsonEndpointAndTheServerSta
     expect_too_deep(path, objects);
     expect_too_deep(path, arrays(100'000));
   }
-  ASSERT_TRUE(server().alive());
+  ASSERT_TRUE(test::default_server().alive());
   EXPECT_EQ(get("/api/v1/health").status, 200);
   EXPECT_EQ(post_json("/api/v1/envmaps/default/samples", R"({"count":4})").status, 200);
 }

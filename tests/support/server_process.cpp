@@ -1,6 +1,7 @@
 #include "support/server_process.hpp"
 
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,8 +13,6 @@
 #include <regex>
 #include <stdexcept>
 #include <thread>
-
-#include <gtest/gtest.h>
 
 #include "support/test_data.hpp"
 
@@ -31,7 +30,8 @@ int wait_for_port(const std::string& log_path, int pid) {
       if (std::regex_search(line, m, listening)) return std::stoi(m[1]);
     }
     int status = 0;
-    if (waitpid(pid, &status, WNOHANG) == pid) throw std::runtime_error("server exited on start; log: " + log_path);
+    if (waitpid(pid, &status, WNOHANG) == pid)
+      throw std::runtime_error("server exited on start; log: " + log_path);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   throw std::runtime_error("server did not report its port within 60 s; log: " + log_path);
@@ -62,7 +62,9 @@ int spawn(const std::vector<std::string>& args, std::string& log_path) {
   return pid;
 }
 
-int decode_status(int status) { return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status); }
+int decode_status(int status) {
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
 
 std::optional<int> wait_for_exit(int pid, std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -113,7 +115,9 @@ ServerProcess::~ServerProcess() {
   if (!own_state_dir_.empty()) std::filesystem::remove_all(own_state_dir_, ec);
 }
 
-std::string ServerProcess::log() const { return read_text(log_path_); }
+std::string ServerProcess::log() const {
+  return read_text(log_path_);
+}
 
 void ServerProcess::send_signal(int signal) const {
   if (pid_ > 0) kill(pid_, signal);
@@ -158,7 +162,9 @@ std::unique_ptr<httplib::Client> ServerProcess::client() const {
   return c;
 }
 
-bool ServerProcess::alive() const { return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0; }
+bool ServerProcess::alive() const {
+  return pid_ > 0 && waitpid(pid_, nullptr, WNOHANG) == 0;
+}
 
 ServerProcess& shared_server() {
   static ServerProcess server([] {
@@ -171,6 +177,11 @@ ServerProcess& shared_server() {
     }
     return args;
   }());
+  return server;
+}
+
+ServerProcess& default_server() {
+  static ServerProcess server;
   return server;
 }
 

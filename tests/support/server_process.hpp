@@ -27,7 +27,6 @@ class ServerProcess {
   // A client with generous timeouts, bound to this server.
   std::unique_ptr<httplib::Client> client() const;
   bool alive() const;  // the process has not exited
-  int pid() const { return pid_; }
   const std::string& log_path() const { return log_path_; }
   std::string log() const;  // the server's output so far
 
@@ -68,5 +67,7 @@ class TempDir {
 // A server shared by all tests of a test binary that need no special flags (started on first use,
 // with forest, studio and the other real maps preloaded under their file stems, e.g. "forest_exr").
 ServerProcess& shared_server();
+// A server started with no flags, so it holds only the built-in map "default"; shared the same way.
+ServerProcess& default_server();
 
 }  // namespace lp::test

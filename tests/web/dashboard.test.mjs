@@ -19,6 +19,7 @@ const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-
 
 let server; // {proc, base, log}
 let profileDir;
+let stateDir; // the server's own --state-dir, removed after the tests
 let context;
 let page;
 const pageErrors = [];
@@ -27,8 +28,9 @@ const pageErrors = [];
 function startServer() {
   assert.ok(serverBin, 'set LIGHTPROBE_SERVER_BIN to the lightprobe-server binary');
   assert.ok(existsSync(path.join(envmaps, 'forest.exr')), `no test map in ${envmaps}`);
+  stateDir = mkdtempSync(path.join(tmpdir(), 'lightprobe-state-'));
   const proc = spawn(serverBin, ['--port', '0', '--threads', '2', '--data-dir', envmaps,
-    '--load', `forest=${path.join(envmaps, 'forest.exr')}`], { stdio: ['ignore', 'pipe', 'pipe'] });
+    '--state-dir', stateDir, '--load', `forest=${path.join(envmaps, 'forest.exr')}`], { stdio: ['ignore', 'pipe', 'pipe'] });
   const log = [];
   return new Promise((resolve, reject) => {
     const timer = setTimeout(() => reject(new Error(`server did not start in 30 s:\n${log.join('')}`)), 30000);
@@ -94,6 +96,7 @@ after(async () => {
     server.proc.kill('SIGTERM');
     await exited;
   }
+  if (stateDir) rmSync(stateDir, { recursive: true, force: true });
 });
 
 test('the server serves the page at / and keeps the API and its JSON 404', async () => {

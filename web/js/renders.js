@@ -1,6 +1,6 @@
 // The Renders panel: submit a preset scene, follow the job through its server-sent events (progress
 // bar, image refreshed after every pass), cancel it, and list every job.
-import { api, apiUrl, loadImage, API } from './api.js';
+import { api, apiUrl, errorOf, loadImage, API } from './api.js';
 import { $, el, num, bigNum, busy, formValues, showError } from './dom.js';
 import { state } from './state.js';
 
@@ -18,8 +18,21 @@ function showImage(job, force = false) {
   if (!force && watched.shownSpp === job.spp_done) return;
   watched.shownSpp = job.spp_done;
   const id = job.id;
-  const src = apiUrl(`/renders/${id}/image`, { format: 'png', exposure: exposure(), spp: job.spp_done });
-  loadImage($('#render-image'), src, () => watched && watched.id === id).catch((e) => showError(panel(), e));
+  const src = apiUrl(`/renders/${id}/image`, { format: 'png', exposure: exposure() });
+  showFreshImage($('#render-image'), src, () => watched && watched.id === id).catch((e) => showError(panel(), e));
+}
+
+// The image of a running render changes with every pass under the same URL: it is fetched past the
+// browser's caches and shown from a blob URL (the one shown before is released).
+let shownBlobUrl = null;
+async function showFreshImage(img, src, current) {
+  const res = await fetch(src, { cache: 'no-store' });
+  if (!res.ok) throw await errorOf(res);
+  const url = URL.createObjectURL(await res.blob());
+  await loadImage(img, url, current);
+  if (img.src !== url) return URL.revokeObjectURL(url);
+  if (shownBlobUrl) URL.revokeObjectURL(shownBlobUrl);
+  shownBlobUrl = url;
 }
 
 function showJob(job) {
