@@ -8,8 +8,8 @@
 #include <mutex>
 #include <string>
 
-#include "engine/envmap/invalid_pixels.hpp"
 #include "engine/core/memory_budget.hpp"
+#include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/latlong.hpp"
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image.hpp"
@@ -67,7 +67,7 @@ class EnvMap {
   std::shared_ptr<const T> derived(const std::string& key, int64_t bytes,
                                    const std::function<std::shared_ptr<const T>()>& build) const {
     const std::any value = derived_any(key, bytes, [&](std::shared_ptr<const MemoryReservation> memory) {
-      auto owner = std::make_shared<Owned<T>>(build(), std::move(memory));
+      auto owner = std::make_shared<Owned<T>>(Owned<T>{build(), std::move(memory)});
       return std::any(std::shared_ptr<const T>(owner, owner->value.get()));
     });
     return std::any_cast<std::shared_ptr<const T>>(value);
