@@ -1,23 +1,25 @@
 #pragma once
 // Memory a render takes from the budget: while it runs, the film, the image published after each pass
-// (the previous one lives on while the next is made) and the checkpoint's encoding; once it ends, the
-// image it keeps (RenderJob::retained_bytes).
+// (the previous one lives on while the next is made), the checkpoint's encoding and its meshes; once
+// it ends, the image it keeps (RenderJob::retained_bytes).
 #include <cstdint>
 
 #include "engine/core/memory_budget.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/render/film.hpp"
+#include "engine/render/mesh_loader.hpp"
 
 namespace lp::server {
 
-inline int64_t running_render_bytes(int64_t width, int64_t height) {
+inline int64_t running_render_bytes(int64_t width, int64_t height, int64_t triangles) {
   return render::Film::memory_bytes(width, height) + 2 * EnvMap::image_bytes(width, height) +
-         encode_bytes(ImageFormat::Exr, width, height);
+         encode_bytes(ImageFormat::Exr, width, height) + render::mesh_memory_bytes(triangles);
 }
 
-inline MemoryReservation reserve_render(const MemoryBudget& budget, int width, int height) {
-  return budget.reserve(running_render_bytes(width, height), MemoryUse::Transient,
+inline MemoryReservation reserve_render(const MemoryBudget& budget, int width, int height,
+                                        int64_t triangles) {
+  return budget.reserve(running_render_bytes(width, height, triangles), MemoryUse::Transient,
                         "a " + std::to_string(width) + "x" + std::to_string(height) + " render");
 }
 

@@ -18,7 +18,8 @@ api::RenderLimits render_limits(const Options& o) {
           o.max_mesh_triangles};
 }
 
-void resolve_meshes(render::SceneDesc& scene, const Options& options) {
+int64_t resolve_meshes(render::SceneDesc& scene, const Options& options) {
+  int64_t triangles = 0;
   render::MeshLimits limits;
   limits.max_triangles = options.max_mesh_triangles;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -33,11 +34,12 @@ void resolve_meshes(render::SceneDesc& scene, const Options& options) {
       throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
     }
     try {
-      render::check_obj_file(mesh->path, limits);
+      triangles += render::check_obj_file(mesh->path, limits);
     } catch (const Error& e) {
       throw api::invalid_field(field, e.what());
     }
   }
+  return triangles;
 }
 
 }  // namespace lp::server

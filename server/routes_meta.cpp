@@ -4,9 +4,12 @@
 
 namespace lp::server {
 
-void register_meta_routes(Router& router, App&) {
-  router.get("/api/v1/health", [](const httplib::Request&, httplib::Response& res) {
-    send_json(res, {{"status", "ok"}, {"version", LIGHTPROBE_VERSION}});
+void register_meta_routes(Router& router, App& app) {
+  router.get("/api/v1/health", [&app](const httplib::Request&, httplib::Response& res) {
+    const nlohmann::json memory = {{"budget_bytes", app.memory.capacity()},
+                                   {"used_bytes", app.memory.used()},
+                                   {"cache_bytes", app.memory.used(MemoryUse::Cache)}};
+    send_json(res, {{"status", "ok"}, {"version", LIGHTPROBE_VERSION}, {"memory", memory}});
   });
   router.get("/api/v1/openapi.yaml", [](const httplib::Request&, httplib::Response& res) {
     const auto doc = api::openapi_document();

@@ -36,8 +36,14 @@ std::shared_ptr<const Image> read_record_image(const StateStore& store, const Re
 std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   const auto request = api::parse_render_request(record.request, render_limits(app.options));
   const JobStatus status = is_finished(record.status) ? record.status : JobStatus::Interrupted;
+  // The image stays with the job, so it is held from the budget like a finished render's.
+  MemoryReservation memory;
+  if (!record.image_file.empty())
+    memory = app.memory.reserve(EnvMap::image_bytes(request.settings.width, request.settings.height),
+                                MemoryUse::Held, fmt::format("the image of render {}", record.id));
   auto image = read_record_image(*app.state, record, request);
   if (!image) {
+    memory = {};
     if (status != JobStatus::Interrupted && record.spp_done > 0)
       throw std::runtime_error("its image is unusable");
     record.spp_done = 0;  // an interrupted render without a usable image starts over
@@ -45,6 +51,7 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   }
   auto job =
       std::make_shared<RenderJob>(std::move(record), request, nullptr, std::move(image), app.state.get());
+  job->hold_memory(std::move(memory));
   job->restore_ended(status, job->error());
   return job;
 }
@@ -101,9 +108,10 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
                         fmt::format("it is {}; only interrupted renders resume", status_name(job->status())));
   RenderRecord record = job->record();
   api::RenderRequest request;
+  int64_t triangles = 0;
   try {
     request = api::parse_render_request(record.request, render_limits(app.options));
-    resolve_meshes(request.scene, app.options);
+    triangles = resolve_meshes(request.scene, app.options);
   } catch (const api::ApiError& e) {
     throw cannot_resume(*job, "cannot_resume", e.what());
   }
@@ -116,7 +124,7 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
     throw cannot_resume(
         *job, "envmap_changed",
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
-  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height);
+  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
   auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
                                           job->image().image, app.state.get());
   next->hold_memory(std::move(memory));

@@ -1,16 +1,17 @@
 #include "engine/mediancut/median_cut.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 
-#include <fmt/format.h>
-
-#include "engine/mediancut/median_cut_cache.hpp"
 #include "engine/mediancut/subdivision.hpp"
 
 namespace lp {
 
-const char* split_rule_name(SplitRule r) { return r == SplitRule::Median ? "median" : "variance"; }
+const char* split_rule_name(SplitRule r) {
+  return r == SplitRule::Median ? "median" : "variance";
+}
 
 std::optional<SplitRule> parse_split_rule(std::string_view s) {
   if (s == "median") return SplitRule::Median;
@@ -26,7 +27,8 @@ std::string MedianCutParams::key() const {
 SplitTables build_split_tables(const Image& image, LuminanceMode mode, SplitRule rule) {
   SplitTables t;
   t.weight = std::make_shared<const SummedAreaTable>(build_weight_table(image, mode));
-  if (rule == SplitRule::Variance) t.moments = std::make_shared<const MomentTables>(build_moment_tables(image, mode));
+  if (rule == SplitRule::Variance)
+    t.moments = std::make_shared<const MomentTables>(build_moment_tables(image, mode));
   return t;
 }
 
@@ -59,28 +61,27 @@ MedianCutResult median_cut(const Image& image, const MedianCutParams& params, co
     result.energy_min = std::min(result.energy_min, light.energy);
     result.energy_max = std::max(result.energy_max, light.energy);
   }
-  result.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 MedianCutResult median_cut(const EnvMap& map, const MedianCutParams& params) {
   const auto start = std::chrono::steady_clock::now();
   MedianCutResult result = median_cut(map.image(), params, split_tables(map, params.luminance, params.split));
-  result.elapsed_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  result.elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 std::shared_ptr<const MedianCutResult> median_cut_cached(const EnvMap& map, const MedianCutParams& params,
                                                          bool* hit) {
-  const auto cache =
-      map.derived<MedianCutCache>("median_cut:results", [] { return std::make_shared<const MedianCutCache>(); });
-  const std::string key = params.key();
-  auto result = cache->find(key);
-  if (hit) *hit = result != nullptr;
-  if (result) return result;
-  result = std::make_shared<const MedianCutResult>(median_cut(map, params));
-  cache->store(key, result);
-  return result;
+  if (hit) *hit = true;
+  return map.derived<MedianCutResult>(
+      "median_cut:" + params.key(), MedianCutResult::memory_bytes(params.count), [&] {
+        if (hit) *hit = false;
+        return std::make_shared<const MedianCutResult>(median_cut(map, params));
+      });
 }
 
 }  // namespace lp

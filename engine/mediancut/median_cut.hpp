@@ -26,7 +26,8 @@ struct MedianCutParams {
   SplitRule split = SplitRule::Median;
   LuminanceMode luminance = LuminanceMode::Average;
 
-  std::string key() const;  // all parameters, e.g. "count=64;placement=centroid;split=median;luminance=average"
+  std::string key()
+      const;  // all parameters, e.g. "count=64;placement=centroid;split=median;luminance=average"
 };
 
 struct MedianCutResult {
@@ -35,6 +36,10 @@ struct MedianCutResult {
   Power power{};  // sum of the lights' powers: the map's power up to rounding
   double energy_min = 0, energy_max = 0;
   double elapsed_ms = 0;  // time the computation took (including any table it had to build)
+
+  static int64_t memory_bytes(int64_t count) {
+    return int64_t(sizeof(MedianCutResult)) + count * int64_t(sizeof(MedianCutLight));
+  }
 };
 
 // The summed-area tables a split rule needs: the weight table always, the moment tables for the
@@ -51,8 +56,9 @@ SplitTables split_tables(const EnvMap& map, LuminanceMode mode, SplitRule rule);
 MedianCutResult median_cut(const Image& image, const MedianCutParams& params, const SplitTables& tables);
 MedianCutResult median_cut(const EnvMap& map, const MedianCutParams& params);
 
-// median_cut(map, params), remembered per (map, params) in a small per-map LRU cache, so a repeated
-// request is free. `hit` (optional) tells whether the result came from the cache.
+// median_cut(map, params), remembered per (map, params) in the map's cache (EnvMap::derived: its
+// bytes come from the map's memory budget, evicted least recently used first), so a repeated request
+// is free. `hit` (optional) tells whether the result came from the cache.
 std::shared_ptr<const MedianCutResult> median_cut_cached(const EnvMap& map, const MedianCutParams& params,
                                                          bool* hit = nullptr);
 

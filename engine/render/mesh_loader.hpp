@@ -24,7 +24,11 @@ TriangleMesh load_obj_mesh(const MeshObject& mesh, const MeshLimits& limits);
 TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& mesh,
                                 const MeshLimits& limits);
 // Reads the file and refuses what load_obj_mesh would refuse before parsing (see obj_prescan.hpp),
-// so that a request can be answered at once.
-void check_obj_file(const std::filesystem::path& path, const MeshLimits& limits);
+// so that a request can be answered at once. Returns the number of triangles the mesh will have.
+int64_t check_obj_file(const std::filesystem::path& path, const MeshLimits& limits);
+
+// Memory a mesh of `triangles` takes while a render holds it: the parsed file, the TriangleMesh and
+// Embree's scene and BVH (measured: see kMeshBytesPerTriangle).
+int64_t mesh_memory_bytes(int64_t triangles);
 
 }  // namespace lp::render

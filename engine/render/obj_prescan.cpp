@@ -46,6 +46,8 @@ class Checker {
  public:
   Checker(const std::string& name, int64_t max_triangles) : name_(name), max_triangles_(max_triangles) {}
 
+  int64_t triangles() const { return triangles_; }
+
   void line(size_t number, std::string_view text) {
     line_ = number;
     const Line l = split(text);
@@ -148,7 +150,7 @@ class Checker {
 
 }  // namespace
 
-void check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles) {
+int64_t check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles) {
   Checker checker(name, max_triangles);
   size_t number = 0;
   // Lines end at '\n', '\r' or "\r\n", as the library reads them.
@@ -157,6 +159,7 @@ void check_obj_text(std::string_view text, const std::string& name, int64_t max_
     checker.line(++number, text.substr(start, end - start));
     start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
   }
+  return checker.triangles();
 }
 
 }  // namespace lp::render

@@ -15,7 +15,8 @@ inline constexpr int kMaxObjFaceVertices = 256;     // more in one polygon is re
 inline constexpr int kMaxObjExponentDigits = 4;     // 1e9999 is already beyond double
 inline constexpr int64_t kMaxObjJointId = 1 << 24;  // skin-weight joint ids must be exact in a float
 
-// Throws lp::Error(Corrupt) naming the line, or TooLarge when the faces make over `max_triangles`.
-void check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles);
+// Returns the number of triangles the faces make. Throws lp::Error(Corrupt) naming the line, or
+// TooLarge when the faces make over `max_triangles`.
+int64_t check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles);
 
 }  // namespace lp::render

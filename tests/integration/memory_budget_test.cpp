@@ -2,10 +2,11 @@
 // then loads are refused with 507), deleting a map returns its bytes, decodes reserve the pixels a
 // header claims before allocating them (503 with Retry-After while work in flight holds the memory),
 // and pictures larger than the budget are refused.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <future>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -13,6 +14,7 @@
 
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
+#include "support/test_data.hpp"
 
 namespace lp {
 namespace {
@@ -160,6 +162,52 @@ TEST(MemoryBudgetApi, SamplePicturesOverTheBudgetAreRefused) {
   // 10 million samples take about 450 MiB before the picture is drawn.
   expect_refusal(get(s, "/api/v1/envmaps/default/samples.png?count=10000000"), 507, "insufficient_memory");
   EXPECT_EQ(get(s, "/api/v1/envmaps/default/samples.png?count=1000").status, 200);
+}
+
+int64_t used_bytes(const test::ServerProcess& s) {
+  const Reply health = get(s, "/api/v1/health");
+  EXPECT_EQ(health.status, 200);
+  return health.status == 200 ? health.body_json()["memory"]["used_bytes"].get<int64_t>() : -1;
+}
+
+json tiny_render(const json& scene) {
+  return {{"envmap", "default"}, {"scene", scene}, {"width", 16}, {"height", 16}, {"spp", 1}};
+}
+
+TEST(MemoryBudgetApi, RenderMeshesAreReservedFromTheirTriangleCount) {
+  test::TempDir data;
+  std::ofstream(data.path() / "small.obj") << test::grid_obj(20);   // 800 triangles
+  std::ofstream(data.path() / "large.obj") << test::grid_obj(300);  // 180,000 triangles: about 44 MiB
+  test::ServerProcess s({"--max-memory-mb", "40", "--data-dir", data.path().string()});
+  const auto mesh_scene = [](const std::string& file) {
+    return json{{"objects", json::array({{{"type", "mesh"}, {"path", file}}})}};
+  };
+  expect_refusal(post_json(s, "/api/v1/renders", tiny_render(mesh_scene("large.obj"))), 507,
+                 "insufficient_memory");
+  const Reply small = post_json(s, "/api/v1/renders", tiny_render(mesh_scene("small.obj")));
+  EXPECT_EQ(small.status, 202) << small.body;
+}
+
+TEST(MemoryBudgetApi, FinishedRendersRestoredAtStartHoldTheirImages) {
+  test::TempDir state;
+  const std::vector<std::string> flags = {"--state-dir", state.path().string()};
+  {
+    test::ServerProcess first(flags);
+    json body = tiny_render({{"preset", "sphere"}});
+    body["width"] = 256;
+    body["height"] = 128;
+    const Reply r = post_json(first, "/api/v1/renders", body);
+    ASSERT_EQ(r.status, 202) << r.body;
+    const std::string id = r.body_json()["id"];
+    for (int i = 0; i < 3000 && get(first, "/api/v1/renders/" + id).body_json()["status"] != "done"; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_EQ(get(first, "/api/v1/renders/" + id).body_json()["status"], "done");
+  }
+  test::ServerProcess restored(flags);
+  test::ServerProcess fresh;
+  ASSERT_EQ(get(restored, "/api/v1/renders").body_json()["renders"].size(), 1u);
+  // The only difference between the two servers is the restored 256 x 128 float RGB image.
+  EXPECT_EQ(used_bytes(restored) - used_bytes(fresh), int64_t{256} * 128 * 3 * 4);
 }
 
 }  // namespace

@@ -3,13 +3,18 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 namespace lp::test {
 
-std::filesystem::path shared_data() { return LIGHTPROBE_SHARED_DATA; }
+std::filesystem::path shared_data() {
+  return LIGHTPROBE_SHARED_DATA;
+}
 
-std::filesystem::path envmap_path(const std::string& file) { return shared_data() / "envmaps" / file; }
+std::filesystem::path envmap_path(const std::string& file) {
+  return shared_data() / "envmaps" / file;
+}
 
 std::vector<std::string> real_envmap_files() {
   std::vector<std::string> files;
@@ -27,6 +32,18 @@ std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string grid_obj(int n) {
+  std::ostringstream out;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) out << "v " << x << ' ' << y << ' ' << ((x * 7 + y * 13) % 5) * 0.1 << '\n';
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int a = y * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
+      out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
+    }
+  return out.str();
 }
 
 }  // namespace lp::test

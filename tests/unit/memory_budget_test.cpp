@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/envmap/envmap.hpp"
+#include "engine/mediancut/median_cut.hpp"
 
 namespace lp {
 namespace {
@@ -179,6 +180,28 @@ TEST(EnvMapMemory, DerivedDataIsReservedEvictedAndBuiltAgain) {
   EXPECT_EQ(builds, 2);
   map.reset();
   EXPECT_EQ(budget.used(), 0);
+}
+
+TEST(EnvMapMemory, MedianCutResultsAreCachedInTheBudgetAndEvictedFirst) {
+  const MemoryBudget budget(int64_t{8} << 20);
+  auto map = std::make_shared<EnvMap>(flat_image(64, 32));
+  map->account_memory(budget, budget.reserve(EnvMap::image_bytes(64, 32), MemoryUse::Held, "map"));
+  MedianCutParams params;
+  params.count = 256;
+  bool hit = true;
+  median_cut_cached(*map, params, &hit);
+  EXPECT_FALSE(hit);
+  // The result and the summed-area table it was cut from are both cache entries of the map.
+  EXPECT_GE(budget.used(MemoryUse::Cache),
+            MedianCutResult::memory_bytes(256) + SummedAreaTable::memory_bytes(64, 32));
+  median_cut_cached(*map, params, &hit);
+  EXPECT_TRUE(hit);
+
+  auto other = budget.reserve(budget.capacity() - EnvMap::image_bytes(64, 32), MemoryUse::Transient, "other");
+  EXPECT_EQ(budget.used(MemoryUse::Cache), 0);
+  other.release();
+  median_cut_cached(*map, params, &hit);
+  EXPECT_FALSE(hit);
 }
 
 }  // namespace

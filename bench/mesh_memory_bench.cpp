@@ -1,0 +1,74 @@
+// Resident memory a render's mesh takes: peak and held bytes per triangle while an EmbreeScene is built
+// from an OBJ (parsing, TriangleMesh, Embree's BVH), for the bunny and for generated grids of 20k and
+// 980k triangles. mesh_memory_bytes() is set from these figures. Run: build/bin/mesh_memory_bench.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "engine/render/embree_scene.hpp"
+#include "engine/render/mesh_loader.hpp"
+#include "support/test_data.hpp"
+
+namespace {
+
+// A field of /proc/self/status in bytes ("VmRSS", "VmHWM").
+int64_t status_bytes(const std::string& field) {
+  std::ifstream status("/proc/self/status");
+  for (std::string key; status >> key;) {
+    int64_t kib = 0;
+    if (key == field + ":" && status >> kib) return kib * 1024;
+    status.ignore(1 << 20, '\n');
+  }
+  return 0;
+}
+
+void reset_peak() {
+  std::ofstream("/proc/self/clear_refs") << "5";
+}
+
+std::filesystem::path grid_file(int n) {
+  const auto path =
+      std::filesystem::temp_directory_path() / ("lightprobe-grid-" + std::to_string(n) + ".obj");
+  std::ofstream(path) << lp::test::grid_obj(n);
+  return path;
+}
+
+void measure(benchmark::State& state, const std::filesystem::path& obj) {
+  lp::render::SceneDesc scene;
+  lp::render::MeshObject mesh;
+  mesh.path = obj;
+  scene.objects.push_back({mesh, {}});
+  const lp::render::MeshLimits limits;
+  { lp::render::EmbreeScene warm_up(scene, limits); }  // the first build also starts Embree's threads
+  double peak = 0, held = 0, triangles = 0;
+  for (auto _ : state) {
+    reset_peak();
+    const int64_t before = status_bytes("VmRSS");
+    lp::render::EmbreeScene built(scene, limits);
+    held = double(status_bytes("VmRSS") - before);
+    peak = double(status_bytes("VmHWM") - before);
+    triangles = double(built.triangle_count());
+  }
+  state.counters["triangles"] = triangles;
+  state.counters["peak_bytes_per_triangle"] = peak / triangles;
+  state.counters["held_bytes_per_triangle"] = held / triangles;
+  state.counters["estimate_bytes_per_triangle"] = double(lp::render::mesh_memory_bytes(1));
+}
+
+void BM_BunnyMemory(benchmark::State& state) {
+  measure(state, lp::test::shared_data() / "meshes" / "bunny.obj");
+}
+BENCHMARK(BM_BunnyMemory)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_GridMemory(benchmark::State& state) {
+  const auto obj = grid_file(int(state.range(0)));
+  measure(state, obj);
+  std::filesystem::remove(obj);
+}
+BENCHMARK(BM_GridMemory)->Arg(100)->Arg(700)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
