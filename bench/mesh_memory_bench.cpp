@@ -58,7 +58,9 @@ void measure(benchmark::State& state, const std::filesystem::path& obj) {
 }
 
 void BM_BunnyMemory(benchmark::State& state) {
-  measure(state, lp::test::shared_data() / "meshes" / "bunny.obj");
+  const auto bunny = lp::test::shared_data() / "meshes" / "bunny.obj";
+  if (!std::filesystem::exists(bunny)) return state.SkipWithError("no ../shared/data/meshes/bunny.obj");
+  measure(state, bunny);
 }
 BENCHMARK(BM_BunnyMemory)->Iterations(1)->Unit(benchmark::kMillisecond);
 
