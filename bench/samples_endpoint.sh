@@ -14,8 +14,8 @@ url="http://127.0.0.1:$port/api/v1/envmaps/forest/samples"
 for strategy in independent stratified sobol; do
   for run in 1 2 3; do
     curl -s -o /dev/null -w "$strategy binary N=1e6: %{time_total} s, %{size_download} bytes\n" \
-      -H 'Accept: application/octet-stream' -X POST "$url" -d "{\"count\":1000000,\"seed\":$run,\"strategy\":\"$strategy\"}"
+      -H 'Accept: application/octet-stream' -H 'Content-Type: application/json' -X POST "$url" -d "{\"count\":1000000,\"seed\":$run,\"strategy\":\"$strategy\"}"
   done
 done
 curl -s -o /dev/null -w "independent json N=1e6: %{time_total} s, %{size_download} bytes\n" \
-  -X POST "$url" -d '{"count":1000000,"seed":1}'
+  -H 'Content-Type: application/json' -X POST "$url" -d '{"count":1000000,"seed":1}'

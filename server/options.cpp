@@ -19,6 +19,10 @@ Usage: lightprobe-server [options]
 
   --host ADDR            address to listen on (default 127.0.0.1)
   --port N               port (default 8080; 0 picks a free port, printed on start)
+  --allowed-host NAME    a Host header name to answer besides loopback and --host (repeatable); others
+                         get 403 (a defence against DNS rebinding)
+  --cors-origin ORIGIN   an origin (http://host:port, or *) whose pages may call the API (repeatable);
+                         without it, requests that change state from another origin get 403
   --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
   --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
   --web-dir DIR          static dashboard served at / (default: the source tree's web/); the API keeps /api
@@ -99,6 +103,10 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.list_routes = true;
     } else if (flag == "--host") {
       o.host = value();
+    } else if (flag == "--allowed-host") {
+      o.allowed_hosts.push_back(value());
+    } else if (flag == "--cors-origin") {
+      o.cors_origins.push_back(value());
     } else if (flag == "--port") {
       o.port = int(parse_count(flag, value(), 0, 65535));
     } else if (flag == "--data-dir") {

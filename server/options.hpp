@@ -16,7 +16,9 @@ int64_t default_max_memory_mb();
 
 struct Options {
   std::string host = "127.0.0.1";
-  int port = 8080;  // 0 = any free port (printed on start)
+  std::vector<std::string> allowed_hosts;  // --allowed-host: Host names answered besides loopback and --host
+  std::vector<std::string> cors_origins;   // --cors-origin: other origins that may call the API ("*": any)
+  int port = 8080;                         // 0 = any free port (printed on start)
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
   std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)

@@ -88,9 +88,9 @@ Handler guarded(Handler handler) {
 // POST bodies are read through a content reader: httplib's default path caps bodies sent as
 // application/x-www-form-urlencoded (curl's default for -d and --data-binary) at 8 KiB and parses
 // them as forms, which would refuse an image uploaded with a plain `curl --data-binary @map.exr`.
-httplib::Server::HandlerWithContentReader with_body(Handler handler) {
-  return [handler = guarded(std::move(handler))](const httplib::Request& req, httplib::Response& res,
-                                                 const httplib::ContentReader& reader) {
+httplib::Server::HandlerWithContentReader with_body(Handler handler, PostBody body) {
+  return [handler = guarded(std::move(handler)), body](const httplib::Request& req, httplib::Response& res,
+                                                       const httplib::ContentReader& reader) {
     if (req.is_multipart_form_data()) {
       send_error(res, 415, "unsupported_media_type",
                  "send the file as the raw request body, not as multipart/form-data");
@@ -108,6 +108,12 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler) {
         send_error(res, 400, "bad_request", "the request body could not be read");
       return;
     }
+    if (body == PostBody::Json && !with.body.empty() && !has_json_content_type(with)) {
+      send_error(res, 415, "unsupported_media_type",
+                 "the body of " + req.method + " " + req.path +
+                     " is JSON: send it as Content-Type: application/json");
+      return;
+    }
     handler(with, res);
   };
 }
@@ -122,14 +128,14 @@ Handler with_query_policy(QueryPolicy policy, Handler handler) {
 
 }  // namespace
 
-void Router::add(const std::string& method, const std::string& path, Handler handler) {
+void Router::add(const std::string& method, const std::string& path, Handler handler, PostBody body) {
   const std::string pattern = to_regex(path);
   routes_.push_back({method, path, std::regex(pattern)});
   handler = with_query_policy(QueryPolicy(method, path), std::move(handler));
   if (method == "GET")
     server_.Get(pattern, guarded(std::move(handler)));
   else if (method == "POST")
-    server_.Post(pattern, with_body(std::move(handler)));
+    server_.Post(pattern, with_body(std::move(handler), body));
   else if (method == "DELETE")
     server_.Delete(pattern, guarded(std::move(handler)));
 }
@@ -137,8 +143,8 @@ void Router::add(const std::string& method, const std::string& path, Handler han
 void Router::get(const std::string& path, Handler handler) {
   add("GET", path, std::move(handler));
 }
-void Router::post(const std::string& path, Handler handler) {
-  add("POST", path, std::move(handler));
+void Router::post(const std::string& path, Handler handler, PostBody body) {
+  add("POST", path, std::move(handler), body);
 }
 void Router::del(const std::string& path, Handler handler) {
   add("DELETE", path, std::move(handler));
@@ -151,6 +157,15 @@ std::vector<std::string> Router::methods_for(const std::string& request_path) co
         std::find(methods.begin(), methods.end(), route.method) == methods.end())
       methods.push_back(route.method);
   return methods;
+}
+
+bool has_json_content_type(const httplib::Request& req) {
+  std::string type = req.get_header_value("Content-Type");
+  type = type.substr(0, type.find(';'));
+  std::erase_if(type, [](char c) { return c == ' ' || c == '\t'; });
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return type == "application/json";
 }
 
 std::string path_param(const httplib::Request& req, size_t n) {

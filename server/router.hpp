@@ -21,12 +21,16 @@ struct Route {
 
 using Handler = std::function<void(const httplib::Request&, httplib::Response&)>;
 
+// What a POST route reads from its body. A JSON body must say so (Content-Type: application/json):
+// a browser can send text/plain or a form to another site without asking, but not JSON.
+enum class PostBody { Json, JsonOrImage };
+
 class Router {
  public:
   explicit Router(httplib::Server& server) : server_(server) {}
 
   void get(const std::string& path, Handler handler);
-  void post(const std::string& path, Handler handler);
+  void post(const std::string& path, Handler handler, PostBody body = PostBody::Json);
   void del(const std::string& path, Handler handler);
 
   const std::vector<Route>& routes() const { return routes_; }
@@ -34,11 +38,15 @@ class Router {
   std::vector<std::string> methods_for(const std::string& request_path) const;
 
  private:
-  void add(const std::string& method, const std::string& path, Handler handler);
+  void add(const std::string& method, const std::string& path, Handler handler,
+           PostBody body = PostBody::Json);
 
   httplib::Server& server_;
   std::vector<Route> routes_;
 };
+
+// Whether the request's Content-Type is application/json (parameters such as charset allowed).
+bool has_json_content_type(const httplib::Request& req);
 
 // Path parameter n (1-based, in order of appearance) of a route registered with {name} segments.
 std::string path_param(const httplib::Request& req, size_t n);

@@ -23,9 +23,13 @@ InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
                                                      invalid_pixel_policy_names()));
 }
 
+// A JSON body (load by path) must say so; anything else is an image upload.
 bool is_json_body(const httplib::Request& req) {
-  const std::string type = req.get_header_value("Content-Type");
-  return type.rfind("application/json", 0) == 0 || (!req.body.empty() && req.body.front() == '{');
+  if (has_json_content_type(req)) return true;
+  if (!req.body.empty() && req.body.front() == '{')
+    throw api::ApiError(415, "unsupported_media_type",
+                        "a JSON body (load by path) must be sent as Content-Type: application/json");
+  return false;
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_json(App& app, const httplib::Request& req) {
@@ -79,8 +83,10 @@ void register_envmap_routes(Router& router, App& app) {
     for (const auto& e : app.envmaps.list()) list.push_back(metadata(*e));
     send_json(res, {{"envmaps", list}});
   });
-  router.post("/api/v1/envmaps",
-              [&app](const httplib::Request& req, httplib::Response& res) { create(app, req, res); });
+  router.post(
+      "/api/v1/envmaps",
+      [&app](const httplib::Request& req, httplib::Response& res) { create(app, req, res); },
+      PostBody::JsonOrImage);
   router.get("/api/v1/envmaps/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, metadata(*app.envmaps.get(path_param(req, 1))));
   });

@@ -25,15 +25,23 @@ Server::Server(App& app)
     : app_(app),
       http_(transport_limits(app.options)),
       router_(http_),
-      access_log_(app.options.access_log_sample) {
+      access_log_(app.options.access_log_sample),
+      browser_(app.options) {
   http_.set_keep_alive_max_count(1000);
 
-  http_.set_pre_routing_handler([this](const httplib::Request&, httplib::Response& res) {
+  http_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     AccessLog::start_request();
-    if (accepting_.load()) return httplib::Server::HandlerResponse::Unhandled;
-    res.set_header("Connection", "close");
-    send_error(res, 503, "shutting_down", "the server is shutting down");
-    return httplib::Server::HandlerResponse::Handled;
+    if (!accepting_.load()) {
+      res.set_header("Connection", "close");
+      send_error(res, 503, "shutting_down", "the server is shutting down");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (const auto refusal = browser_.refusal(req)) {
+      send_error(res, refusal->status(), refusal->code(), refusal->what());
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return browser_.answer_cors(req, res, router_) ? httplib::Server::HandlerResponse::Handled
+                                                   : httplib::Server::HandlerResponse::Unhandled;
   });
   http_.set_logger(
       [this](const httplib::Request& req, const httplib::Response& res) { access_log_.record(req, res); });

@@ -8,6 +8,7 @@
 
 #include "server/access_log.hpp"
 #include "server/app.hpp"
+#include "server/browser_policy.hpp"
 #include "server/http_transport.hpp"
 #include "server/router.hpp"
 
@@ -37,6 +38,7 @@ class Server {
   HttpTransport http_;
   Router router_;
   AccessLog access_log_;
+  BrowserPolicy browser_;
   std::atomic<bool> accepting_{true};
 };
 

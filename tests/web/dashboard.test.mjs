@@ -204,7 +204,7 @@ test('median cut shows N lights of nearly equal energy and their picture', async
   await page.locator('#median-cut-stats').filter({ hasText: '16 lights' }).waitFor();
   await page.waitForFunction(() => document.querySelector('#median-cut-image').src.includes('count=16'));
   await waitForImage('#median-cut-image', 1024);
-  const api = await (await fetch(`${server.base}/api/v1/envmaps/forest/median-cut`, { method: 'POST', body: '{"count":16}' })).json();
+  const api = await (await fetch(`${server.base}/api/v1/envmaps/forest/median-cut`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"count":16}' })).json();
   const stats = await page.locator('#median-cut-stats').innerText();
   assert.ok(stats.includes(`${Number(api.energy_min.toPrecision(4))} / ${Number(api.energy_max.toPrecision(4))}`), stats);
   assert.equal(await page.locator('#median-cut-lights tbody tr').count(), 5);

@@ -1,0 +1,38 @@
+#pragma once
+// What a web browser may ask of the server, as local development servers decide it. A page from any
+// site can make the browser send requests to 127.0.0.1, and a DNS name rebound to 127.0.0.1 makes such
+// a page same-origin. So the Host header must name this server (loopback, --host or --allowed-host),
+// requests that change state (POST, DELETE) from a page of another origin are refused unless that
+// origin is listed with --cors-origin, and listed origins get CORS headers and preflight answers.
+#include <httplib.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "api/api_error.hpp"
+#include "server/options.hpp"
+#include "server/router.hpp"
+
+namespace lp::server {
+
+class BrowserPolicy {
+ public:
+  explicit BrowserPolicy(const Options& options);
+
+  // The refusal for a request (403 host_not_allowed / origin_not_allowed, 400 missing_host), if any.
+  std::optional<api::ApiError> refusal(const httplib::Request& req) const;
+  // For an origin listed with --cors-origin: its CORS headers, and true if the request is a preflight
+  // (OPTIONS with Access-Control-Request-Method) now answered with 204.
+  bool answer_cors(const httplib::Request& req, httplib::Response& res, const Router& router) const;
+
+ private:
+  bool host_allowed(const std::string& host) const;
+  bool cors_allowed(const std::string& origin) const;
+
+  std::vector<std::string> hosts_;  // lower case, without brackets
+  bool any_ip_literal_ = false;     // bound to every address: any IP literal names this server
+  std::vector<std::string> cors_origins_;
+};
+
+}  // namespace lp::server
