@@ -1,12 +1,13 @@
 #include "api/sample_encoding.hpp"
 
+#include <fmt/format.h>
+
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
-#include <iterator>
-
-#include <fmt/format.h>
+#include <string_view>
 
 namespace lp::api {
 
@@ -21,21 +22,64 @@ bool finite(const EnvSample& s) {
 
 }  // namespace
 
-// fmt prints floats in their shortest round-trip form, so JSON clients read back the exact values.
+// One sample's JSON object, written into a fixed buffer with std::to_chars: floats in their shortest
+// round-trip form (JSON clients read back the exact values), and no format string parsed per sample,
+// which made up most of the cost of a small /samples request.
+class SampleJsonWriter {
+ public:
+  void literal(std::string_view text) {
+    std::memcpy(at_, text.data(), text.size());
+    at_ += text.size();
+  }
+  template <typename T>
+  void number(T value) {
+    at_ = std::to_chars(at_, end(), value).ptr;
+  }
+  template <typename T, typename... Rest>
+  void array(T first, Rest... rest) {
+    *at_++ = '[';
+    number(first);
+    ((*at_++ = ',', number(rest)), ...);
+    *at_++ = ']';
+  }
+  void append_to(std::string& out) const { out.append(buffer_, size_t(at_ - buffer_)); }
+
+ private:
+  char* end() { return buffer_ + sizeof(buffer_); }
+  // Literals take 70 bytes; 11 floats at most 15 bytes each and 2 ints at most 11 each.
+  char buffer_[320];
+  char* at_ = buffer_;
+};
+
 // JSON has no token for NaN or Inf: a sample holding one is a bug upstream, never written.
 void append_sample_json(std::string& out, const EnvSample& s) {
-  if (!finite(s)) throw std::logic_error(fmt::format("sample at pixel ({}, {}) is not finite", s.pixel_x, s.pixel_y));
-  fmt::format_to(std::back_inserter(out),
-                 R"({{"pixel":[{},{}],"uv":[{},{}],"direction":[{},{},{}],"theta":{},"phi":{},"pdf":{},"radiance":[{},{},{}]}})",
-                 s.pixel_x, s.pixel_y, s.u, s.v, s.direction.x, s.direction.y, s.direction.z, s.theta, s.phi, s.pdf,
-                 s.radiance.x, s.radiance.y, s.radiance.z);
+  if (!finite(s))
+    throw std::logic_error(fmt::format("sample at pixel ({}, {}) is not finite", s.pixel_x, s.pixel_y));
+  SampleJsonWriter w;
+  w.literal(R"({"pixel":)");
+  w.array(s.pixel_x, s.pixel_y);
+  w.literal(R"(,"uv":)");
+  w.array(s.u, s.v);
+  w.literal(R"(,"direction":)");
+  w.array(s.direction.x, s.direction.y, s.direction.z);
+  w.literal(R"(,"theta":)");
+  w.number(s.theta);
+  w.literal(R"(,"phi":)");
+  w.number(s.phi);
+  w.literal(R"(,"pdf":)");
+  w.number(s.pdf);
+  w.literal(R"(,"radiance":)");
+  w.array(s.radiance.x, s.radiance.y, s.radiance.z);
+  w.literal("}");
+  w.append_to(out);
 }
 
 void append_sample_binary(std::string& out, const EnvSample& s) {
   static_assert(std::endian::native == std::endian::little, "binary records are little-endian");
-  const float record[kSampleRecordFloats] = {float(s.pixel_x), float(s.pixel_y), s.u, s.v, s.direction.x,
-                                             s.direction.y, s.direction.z, s.theta, s.phi, s.pdf,
-                                             s.radiance.x, s.radiance.y, s.radiance.z};
+  const float record[kSampleRecordFloats] = {
+      float(s.pixel_x), float(s.pixel_y), s.u,         s.v,   s.direction.x,
+      s.direction.y,    s.direction.z,    s.theta,     s.phi, s.pdf,
+      s.radiance.x,     s.radiance.y,     s.radiance.z};
   const size_t at = out.size();
   out.resize(at + sizeof(record));
   std::memcpy(out.data() + at, record, sizeof(record));

@@ -11,6 +11,7 @@
 
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
+#include "server/logging.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
 #include "server/stored_maps.hpp"
@@ -90,8 +91,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!options) return 0;
-  spdlog::set_pattern("%Y-%m-%dT%H:%M:%S.%e %^%l%$ %v");
-  spdlog::set_level(options->log_level);
+  lp::server::Logging logging(options->log_level);
   std::optional<tbb::global_control> threads;
   if (options->threads > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options->threads));
