@@ -6,12 +6,28 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstring>
+#include <utility>
 
 #include "server/request_head.hpp"
 
 namespace lp::server {
 namespace {
+
+// A body up to this size is copied behind its held head and sent with it; a larger one follows it.
+constexpr size_t kCoalescedBodyBytes = 64 * 1024;
+
+// The Content-Length a response head announces (httplib writes the name in this case), 0 if none.
+uint64_t announced_length(std::string_view head) {
+  constexpr std::string_view kName = "\r\nContent-Length: ";
+  const size_t at = head.find(kName);
+  if (at == std::string_view::npos) return 0;
+  uint64_t length = 0;
+  const char* begin = head.data() + at + kName.size();
+  std::from_chars(begin, head.data() + head.size(), length);
+  return length;
+}
 
 constexpr size_t kReadSize = 16 * 1024;
 constexpr size_t kMaxChunkLine = 4096;  // a chunk-size line with its extensions, or a trailer line
@@ -89,6 +105,8 @@ void ConnectionStream::consume(size_t n) {
 
 void ConnectionStream::begin_request(std::string head, BodyFraming body) {
   head_ = std::move(head);
+  expect_head_ = true;
+  head_request_ = head_.starts_with("HEAD ");
   head_pos_ = 0;
   over_limit_ = false;
   decoded_ = 0;
@@ -235,7 +253,29 @@ bool ConnectionStream::is_writable() const {
 }
 
 ssize_t ConnectionStream::write(const char* ptr, size_t size) {
-  return write_all(std::string_view(ptr, size)) ? ssize_t(size) : -1;
+  const std::string_view data(ptr, size);
+  if (std::exchange(expect_head_, false) && !head_request_ && announced_length(data) > 0) {
+    held_head_.assign(data);
+    return ssize_t(size);
+  }
+  return send_after_held_head(data) ? ssize_t(size) : -1;
+}
+
+bool ConnectionStream::flush() {
+  return send_after_held_head({});
+}
+
+bool ConnectionStream::send_after_held_head(std::string_view data) {
+  if (held_head_.empty()) return write_all(data);
+  bool sent = false;
+  if (data.size() <= kCoalescedBodyBytes) {
+    held_head_.append(data);
+    sent = write_all(held_head_);
+  } else {
+    sent = write_all(held_head_) && write_all(data);
+  }
+  held_head_.clear();
+  return sent;
 }
 
 void ConnectionStream::get_remote_ip_and_port(std::string& ip, int& port) const {

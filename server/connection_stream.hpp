@@ -39,6 +39,8 @@ class ConnectionStream final : public httplib::Stream {
 
   // Writes all of `data`; false if the client is gone or takes no data for the I/O timeout.
   bool write_all(std::string_view data);
+  // Sends a response head still held back (see write()); false if the client is gone.
+  bool flush();
   // Ends the connection so that a response just written reaches the client: no more writes, and what
   // the client still sends is read and dropped until it closes (at most `linger`).
   void close_gracefully(std::chrono::milliseconds linger);
@@ -58,6 +60,7 @@ class ConnectionStream final : public httplib::Stream {
   ssize_t read_buffered(char* ptr, size_t size, uint64_t limit);
   ssize_t read_chunked(char* ptr, size_t size);
   bool start_chunk(std::string_view size_line);
+  bool send_after_held_head(std::string_view data);
 
   int fd_;
   int stop_fd_;
@@ -74,6 +77,12 @@ class ConnectionStream final : public httplib::Stream {
   uint64_t max_body_ = 0;
   size_t trailer_bytes_ = 0;
   bool over_limit_ = false;
+  // The first write of a response is its head. When the head announces a body of known length, it is
+  // held and sent with the body's first piece: one packet instead of two for a small response, so the
+  // client wakes once (with TCP_NODELAY each send is a packet). Streamed (chunked) heads go at once.
+  bool expect_head_ = false;
+  bool head_request_ = false;  // a HEAD request: its response head announces a body that is not sent
+  std::string held_head_;
 };
 
 }  // namespace lp::server

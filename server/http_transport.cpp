@@ -199,7 +199,8 @@ void HttpTransport::serve(int fd, const std::string& ip, int port) {
     stream.begin_request(std::move(head.text), head.body);
     const bool close = stopping_ || served + 1 >= keep_alive_max_count_;
     bool closed = false;
-    if (!process_request(stream, close, closed, {}) || close || closed || !stream.body_finished()) {
+    const bool answered = process_request(stream, close, closed, {}) && stream.flush();
+    if (!answered || close || closed || !stream.body_finished()) {
       stream.close_gracefully(kLinger);
       break;
     }

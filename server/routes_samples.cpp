@@ -1,8 +1,8 @@
 // POST /envmaps/{id}/samples (JSON or binary, streamed in chunks so memory stays bounded at any N)
 // and GET /envmaps/{id}/samples.png.
-#include <algorithm>
-
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
 
 #include "api/sample_encoding.hpp"
 #include "engine/envmap/sample_plot.hpp"
@@ -61,6 +61,12 @@ void samples(App& app, const httplib::Request& req, httplib::Response& res) {
     res.set_header("X-Sample-Record-Layout", api::kSampleRecordLayout);
   }
   const char* type = stream->binary ? "application/octet-stream" : "application/json";
+  if (stream->request.spec.count <= kChunk) {  // small: one body with its length, sent in one piece
+    std::string body = stream->binary ? std::string() : json_prologue(stream->request);
+    next_chunk(*stream, body);
+    res.set_content(std::move(body), type);
+    return;
+  }
   res.set_chunked_content_provider(type, [stream](size_t, httplib::DataSink& sink) {
     std::string out = stream->next == 0 && !stream->binary ? json_prologue(stream->request) : std::string();
     try {
