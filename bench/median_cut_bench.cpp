@@ -1,7 +1,7 @@
 // Median cut: summed-area table build, and the whole cut (subdivision + light placement) with and
 // without the table build, on a real 1024 x 512 map and on the same map enlarged to 8192 x 4096.
 // Aims (issue 3): 1024 x 512 with 256 lights <= 5 ms; 8192 x 4096 with 4096 lights <= 300 ms
-// including the table. Run: ./build-<name>/bin/median_cut_bench --benchmark_min_time=1
+// including the table. Run: ./build/bin/median_cut_bench --benchmark_min_time=1
 // "Time" is wall time; "CPU" is the CPU time of all the process's threads (on a loaded machine, wall
 // time depends on what else runs; on an idle one with N cores it lies between CPU / N and CPU).
 #include <benchmark/benchmark.h>

@@ -3,7 +3,7 @@
 // Embree throughput (rtcIntersect1 / rtcOccluded1 on the same scenes, random rays) as the ceiling.
 // Rates are per wall-clock second; the *_per_cpu_s counters divide by the process CPU time instead (all
 // threads), which stays meaningful when other work shares the cores.
-// Run: ./build-<name>/bin/render_bench --benchmark_min_time=2
+// Run: ./build/bin/render_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 
 #include <atomic>

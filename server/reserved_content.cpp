@@ -2,6 +2,9 @@
 
 #include <memory>
 
+#include "engine/image/encode_memory.hpp"
+#include "engine/image/image_io.hpp"
+
 namespace lp::server {
 namespace {
 
@@ -20,6 +23,14 @@ void send_reserved(httplib::Response& res, std::vector<uint8_t> bytes, const std
   res.set_content_provider(size, content_type, [body](size_t offset, size_t length, httplib::DataSink& sink) {
     return sink.write(reinterpret_cast<const char*>(body->bytes.data()) + offset, length);
   });
+}
+
+void send_png_picture(httplib::Response& res, const MemoryBudget& budget, int64_t width, int64_t height,
+                      int64_t drawing_bytes, std::string_view what,
+                      const std::function<std::vector<uint8_t>()>& draw) {
+  auto memory =
+      budget.reserve(drawing_bytes + png_rgb8_encode_bytes(width, height), MemoryUse::Transient, what);
+  send_reserved(res, encode_png_rgb8(draw(), int(width), int(height)), "image/png", std::move(memory));
 }
 
 }  // namespace lp::server

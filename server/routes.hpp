@@ -1,10 +1,15 @@
 #pragma once
-// One function per group of endpoints; server.cpp calls them all. See CONTRIBUTING.md (build in your own
-// build-<name> directory; the lead commits).
+// One function per group of endpoints; server.cpp calls them all.
 #include "server/app.hpp"
 #include "server/router.hpp"
 
 namespace lp::server {
+
+// The handler of an endpoint written as `void endpoint(App&, const httplib::Request&, httplib::Response&)`.
+template <typename Endpoint>
+Handler endpoint_of(App& app, Endpoint endpoint) {
+  return [&app, endpoint](const httplib::Request& req, httplib::Response& res) { endpoint(app, req, res); };
+}
 
 void register_meta_routes(Router& router, App& app);     // health, openapi
 void register_envmap_routes(Router& router, App& app);   // envmaps CRUD, image, distribution

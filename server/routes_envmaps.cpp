@@ -83,10 +83,7 @@ void register_envmap_routes(Router& router, App& app) {
     for (const auto& e : app.envmaps.list()) list.push_back(metadata(*e));
     send_json(res, {{"envmaps", list}});
   });
-  router.post(
-      "/api/v1/envmaps",
-      [&app](const httplib::Request& req, httplib::Response& res) { create(app, req, res); },
-      PostBody::JsonOrImage);
+  router.post("/api/v1/envmaps", endpoint_of(app, create), PostBody::JsonOrImage);
   router.get("/api/v1/envmaps/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, metadata(*app.envmaps.get(path_param(req, 1))));
   });
@@ -95,10 +92,8 @@ void register_envmap_routes(Router& router, App& app) {
     if (!remove_map(app, id)) throw api::not_found("no environment map with id '" + api::excerpt(id) + "'");
     res.status = 204;
   });
-  router.get("/api/v1/envmaps/{id}/image",
-             [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
-  router.get("/api/v1/envmaps/{id}/distribution",
-             [&app](const httplib::Request& req, httplib::Response& res) { distribution(app, req, res); });
+  router.get("/api/v1/envmaps/{id}/image", endpoint_of(app, image));
+  router.get("/api/v1/envmaps/{id}/distribution", endpoint_of(app, distribution));
 }
 
 }  // namespace lp::server

@@ -4,7 +4,6 @@
 
 #include "api/median_cut_request.hpp"
 #include "api/median_cut_schema.hpp"
-#include "engine/image/encode_memory.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
 #include "server/reserved_content.hpp"
 #include "server/routes.hpp"
@@ -19,7 +18,8 @@ void median_cut(App& app, const httplib::Request& req, httplib::Response& res) {
   api::check_count_fits(params, entry->map->image().pixel_count());
   bool cached = false;
   const auto result = median_cut_cached(*entry->map, params, &cached);
-  const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   res.set_content(api::median_cut_json(*result, elapsed, cached), "application/json");
 }
 
@@ -29,20 +29,15 @@ void median_cut_png(App& app, const httplib::Request& req, httplib::Response& re
   api::check_count_fits(r.params, entry->map->image().pixel_count());
   const auto result = median_cut_cached(*entry->map, r.params);
   const int64_t w = entry->map->width(), h = entry->map->height();
-  auto memory = app.memory.reserve(median_cut_plot_bytes(w, h) + png_rgb8_encode_bytes(w, h),
-                                   MemoryUse::Transient, "a median cut picture");
-  const auto rgb = plot_median_cut(entry->map->image(), *result, r.style, r.tone);
-  send_reserved(res, encode_png_rgb8(rgb, entry->map->width(), entry->map->height()), "image/png",
-                std::move(memory));
+  send_png_picture(res, app.memory, w, h, median_cut_plot_bytes(w, h), "a median cut picture",
+                   [&] { return plot_median_cut(entry->map->image(), *result, r.style, r.tone); });
 }
 
 }  // namespace
 
 void register_median_cut_routes(Router& router, App& app) {
-  router.post("/api/v1/envmaps/{id}/median-cut",
-              [&app](const httplib::Request& req, httplib::Response& res) { median_cut(app, req, res); });
-  router.get("/api/v1/envmaps/{id}/median-cut.png",
-             [&app](const httplib::Request& req, httplib::Response& res) { median_cut_png(app, req, res); });
+  router.post("/api/v1/envmaps/{id}/median-cut", endpoint_of(app, median_cut));
+  router.get("/api/v1/envmaps/{id}/median-cut.png", endpoint_of(app, median_cut_png));
 }
 
 }  // namespace lp::server

@@ -187,20 +187,15 @@ void events(App& app, const httplib::Request& req, httplib::Response& res) {
 }  // namespace
 
 void register_render_routes(Router& router, App& app) {
-  router.post("/api/v1/renders",
-              [&app](const httplib::Request& req, httplib::Response& res) { submit(app, req, res); });
+  router.post("/api/v1/renders", endpoint_of(app, submit));
   router.get("/api/v1/renders", [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
   router.get("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, find_render(app, path_param(req, 1))->status_json());
   });
-  router.get("/api/v1/renders/{id}/image",
-             [&app](const httplib::Request& req, httplib::Response& res) { image(app, req, res); });
-  router.get("/api/v1/renders/{id}/events",
-             [&app](const httplib::Request& req, httplib::Response& res) { events(app, req, res); });
-  router.post("/api/v1/renders/{id}/resume",
-              [&app](const httplib::Request& req, httplib::Response& res) { resume(app, req, res); });
-  router.del("/api/v1/renders/{id}",
-             [&app](const httplib::Request& req, httplib::Response& res) { cancel(app, req, res); });
+  router.get("/api/v1/renders/{id}/image", endpoint_of(app, image));
+  router.get("/api/v1/renders/{id}/events", endpoint_of(app, events));
+  router.post("/api/v1/renders/{id}/resume", endpoint_of(app, resume));
+  router.del("/api/v1/renders/{id}", endpoint_of(app, cancel));
 }
 
 }  // namespace lp::server

@@ -6,7 +6,6 @@
 
 #include "api/sample_encoding.hpp"
 #include "engine/envmap/sample_plot.hpp"
-#include "engine/image/encode_memory.hpp"
 #include "server/reserved_content.hpp"
 #include "server/routes.hpp"
 
@@ -87,25 +86,22 @@ void samples_png(App& app, const httplib::Request& req, httplib::Response& res) 
   const auto r = api::parse_sample_image_query(req.params, app.options.max_samples);
   const auto sampler = entry->map->sampler(r.samples.luminance);
   const int64_t w = entry->map->width(), h = entry->map->height();
-  auto memory =
-      app.memory.reserve(int64_t(r.samples.spec.count) * int64_t(sizeof(EnvSample)) +
-                             sample_plot_bytes(w, h) + png_rgb8_encode_bytes(w, h),
-                         MemoryUse::Transient, fmt::format("a picture of {} samples", r.samples.spec.count));
-  std::vector<EnvSample> drawn(r.samples.spec.count);
-  generate_samples(*sampler, r.samples.spec, 0, drawn);
-  const auto rgb = r.style == api::SampleImageStyle::Marks ? plot_sample_marks(*entry->map, drawn, r.tone)
-                                                           : plot_sample_windows(*entry->map, drawn, r.tone);
-  send_reserved(res, encode_png_rgb8(rgb, entry->map->width(), entry->map->height()), "image/png",
-                std::move(memory));
+  const int64_t drawing =
+      int64_t(r.samples.spec.count) * int64_t(sizeof(EnvSample)) + sample_plot_bytes(w, h);
+  send_png_picture(
+      res, app.memory, w, h, drawing, fmt::format("a picture of {} samples", r.samples.spec.count), [&] {
+        std::vector<EnvSample> drawn(r.samples.spec.count);
+        generate_samples(*sampler, r.samples.spec, 0, drawn);
+        return r.style == api::SampleImageStyle::Marks ? plot_sample_marks(*entry->map, drawn, r.tone)
+                                                       : plot_sample_windows(*entry->map, drawn, r.tone);
+      });
 }
 
 }  // namespace
 
 void register_sample_routes(Router& router, App& app) {
-  router.post("/api/v1/envmaps/{id}/samples",
-              [&app](const httplib::Request& req, httplib::Response& res) { samples(app, req, res); });
-  router.get("/api/v1/envmaps/{id}/samples.png",
-             [&app](const httplib::Request& req, httplib::Response& res) { samples_png(app, req, res); });
+  router.post("/api/v1/envmaps/{id}/samples", endpoint_of(app, samples));
+  router.get("/api/v1/envmaps/{id}/samples.png", endpoint_of(app, samples_png));
 }
 
 }  // namespace lp::server
