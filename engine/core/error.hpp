@@ -12,6 +12,8 @@ enum class ErrorKind {
   InvalidData,      // readable, but the values are unusable (NaN, Inf, negative, all zero)
   TooLarge,         // over a configured limit
   NotFound,         // a file or resource is missing
+  WriteFailed,      // a file could not be written
+  Internal,         // a failure of our own or of a library (the ray tracing device), not of the input
 };
 
 class Error : public std::runtime_error {
