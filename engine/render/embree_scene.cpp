@@ -19,10 +19,6 @@ struct EmbreeScene::Object {
 
 namespace {
 
-bool finite(Vec3 v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 void invalid(const std::string& what) {
   throw Error(ErrorKind::InvalidArgument, what);
 }
