@@ -1,5 +1,6 @@
 #pragma once
-// One exception type for the engine; `kind` lets a caller (the server) choose a status code.
+// One exception type for the engine. `kind` says what went wrong; api/error_codes.hpp gives each kind
+// the HTTP status and code a response or a failed render job reports.
 #include <stdexcept>
 #include <string>
 
