@@ -102,18 +102,18 @@ Json parse_json(std::string_view text, std::string_view what) {
         event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
     if (opens && depth >= kMaxJsonDepth)
       throw ApiError(
-          400, "json_too_deep",
+          ErrorCode::JsonTooDeep,
           fmt::format("{} nests arrays and objects deeper than the limit of {} levels", what, kMaxJsonDepth));
     return true;
   };
   Json j = Json::parse(text, bound_depth, false);
-  if (j.is_discarded()) throw ApiError(400, "invalid_json", fmt::format("{} is not valid JSON", what));
+  if (j.is_discarded()) throw ApiError(ErrorCode::InvalidJson, fmt::format("{} is not valid JSON", what));
   return j;
 }
 
 Json parse_json_object(std::string_view body) {
   Json j = parse_json(body);
-  if (!j.is_object()) throw ApiError(400, "invalid_json", "the request body must be a JSON object");
+  if (!j.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   return j;
 }
 

@@ -267,7 +267,7 @@ const char* lighting_mode_name(LightingMode mode) {
 }
 
 RenderRequest parse_render_request(const Json& body, const RenderLimits& limits) {
-  if (!body.is_object()) throw ApiError(400, "invalid_json", "the request body must be a JSON object");
+  if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed"});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);

@@ -59,11 +59,11 @@ std::optional<api::ApiError> BrowserPolicy::refusal(const httplib::Request& req)
   const std::string host = req.get_header_value("Host");
   if (host.empty()) {
     if (req.version == "HTTP/1.0") return std::nullopt;
-    return api::ApiError(400, "missing_host", "an HTTP/1.1 request must have a Host header");
+    return api::ApiError(api::ErrorCode::MissingHost, "an HTTP/1.1 request must have a Host header");
   }
   if (!host_allowed(host_name(host)))
     return api::ApiError(
-        403, "host_not_allowed",
+        api::ErrorCode::HostNotAllowed,
         fmt::format("this server does not answer for host '{}'; start it with --allowed-host {} "
                     "to allow that name",
                     api::excerpt(host_name(host)), api::excerpt(host_name(host))));
@@ -72,7 +72,7 @@ std::optional<api::ApiError> BrowserPolicy::refusal(const httplib::Request& req)
       cors_allowed(origin))
     return std::nullopt;
   return api::ApiError(
-      403, "origin_not_allowed",
+      api::ErrorCode::OriginNotAllowed,
       fmt::format("pages from '{}' may not {} here; start the server with --cors-origin {} to "
                   "allow them",
                   api::excerpt(origin), req.method, api::excerpt(origin)));

@@ -15,8 +15,10 @@ void check_data_dir(const Options& options) {
   const fs::path& dir = *options.data_dir;
   std::error_code ec;
   if (!fs::exists(dir, ec)) throw std::runtime_error("--data-dir " + dir.string() + " does not exist");
-  if (!fs::is_directory(dir, ec)) throw std::runtime_error("--data-dir " + dir.string() + " is not a directory");
-  if (::access(dir.c_str(), R_OK | X_OK) != 0) throw std::runtime_error("--data-dir " + dir.string() + " is not readable");
+  if (!fs::is_directory(dir, ec))
+    throw std::runtime_error("--data-dir " + dir.string() + " is not a directory");
+  if (::access(dir.c_str(), R_OK | X_OK) != 0)
+    throw std::runtime_error("--data-dir " + dir.string() + " is not readable");
 }
 
 fs::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field) {
@@ -31,13 +33,13 @@ fs::path resolve_in_data_dir(const Options& options, const std::string& relative
     if (part == "..") throw api::invalid_field(field, "must not contain '..'");
   std::error_code ec;
   const fs::path root = fs::canonical(*options.data_dir, ec);
-  if (ec) throw api::ApiError(500, "internal", "the data directory is not accessible");
+  if (ec) throw api::ApiError(api::ErrorCode::Internal, "the data directory is not accessible");
   const fs::path full = fs::weakly_canonical(root / rel, ec);
   if (ec) throw api::invalid_field(field, "cannot be resolved");
   const auto [root_end, full_it] = std::mismatch(root.begin(), root.end(), full.begin(), full.end());
   if (root_end != root.end()) throw api::invalid_field(field, "resolves outside the data directory");
   if (!fs::is_regular_file(full, ec))
-    throw api::not_found("no file '" + api::excerpt(relative) + "' in the data directory");
+    throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
   return full;
 }
 

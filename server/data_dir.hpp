@@ -12,8 +12,8 @@ namespace lp::server {
 void check_data_dir(const Options& options);
 
 // Resolves `relative` inside the data dir. Throws ApiError 400 naming `field` if there is no data
-// dir, the path is absolute, has a ".." component, or resolves (through links) outside the dir;
-// 404 if the file does not exist.
+// dir, the path is absolute, has a ".." component, resolves (through links) outside the dir, or names
+// no file: the path is a field of the request, not the resource it addresses.
 std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative,
                                           const std::string& field);
 

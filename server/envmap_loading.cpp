@@ -1,10 +1,10 @@
 #include "server/envmap_loading.hpp"
 
-#include <chrono>
-#include <system_error>
-
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <system_error>
 
 #include "api/api_error.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
@@ -17,7 +17,8 @@ namespace {
 void check_new_name(const App& app, const std::string& name) {
   if (!valid_envmap_name(name))
     throw api::invalid_field("name", "must be 1-64 characters of A-Z a-z 0-9 . _ - and not start with '.'");
-  if (app.envmaps.find(name)) throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
+  if (app.envmaps.find(name))
+    throw api::ApiError(api::ErrorCode::Conflict, "an environment map named '" + name + "' exists");
 }
 
 // The pixels of an image being decoded, reserved before the reader allocates them: from the memory
@@ -26,7 +27,8 @@ struct DecodeMemory {
   MemoryReservation pixels, decoding;
 };
 
-void reserve_or_resize(MemoryReservation& r, const MemoryBudget& budget, int64_t bytes, const std::string& what) {
+void reserve_or_resize(MemoryReservation& r, const MemoryBudget& budget, int64_t bytes,
+                       const std::string& what) {
   if (r)
     r.resize(bytes);
   else
@@ -53,13 +55,16 @@ std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& n
   pixels.set_use(MemoryUse::Held);
   map->account_memory(app.memory, std::move(pixels));
   map->sampler(LuminanceMode::Average);  // precompute the default distribution once, now
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   auto entry = app.envmaps.add(name, format, source, std::move(map));
-  if (const auto& fixed = entry->map->invalid_pixels(); fixed.clamped_negative_values || fixed.non_finite_pixels)
-    spdlog::warn("map '{}': clamped {} negative values (lowest {}) to zero and set {} non-finite pixels to black", name,
-                 fixed.clamped_negative_values, fixed.most_negative_value, fixed.non_finite_pixels);
-  spdlog::info("loaded map '{}' ({}x{} {}, from {}) in {:.1f} ms", name, entry->map->width(), entry->map->height(),
-               entry->format, source, ms);
+  if (const auto& fixed = entry->map->invalid_pixels();
+      fixed.clamped_negative_values || fixed.non_finite_pixels)
+    spdlog::warn(
+        "map '{}': clamped {} negative values (lowest {}) to zero and set {} non-finite pixels to black",
+        name, fixed.clamped_negative_values, fixed.most_negative_value, fixed.non_finite_pixels);
+  spdlog::info("loaded map '{}' ({}x{} {}, from {}) in {:.1f} ms", name, entry->map->width(),
+               entry->map->height(), entry->format, source, ms);
   return entry;
 }
 
@@ -71,8 +76,10 @@ ImageLimits image_limits(const Options& options) {
   return limits;
 }
 
-std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name, std::span<const uint8_t> bytes,
-                                                         const std::string& source, InvalidPixelPolicy policy) {
+std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name,
+                                                         std::span<const uint8_t> bytes,
+                                                         const std::string& source,
+                                                         InvalidPixelPolicy policy) {
   check_new_name(app, name);
   DecodeMemory memory;
   DecodedImage decoded = read_image(bytes, budgeted_limits(app, memory));
@@ -81,7 +88,8 @@ std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::st
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::string& name,
-                                                        const std::filesystem::path& path, const std::string& source,
+                                                        const std::filesystem::path& path,
+                                                        const std::string& source,
                                                         InvalidPixelPolicy policy) {
   check_new_name(app, name);
   std::error_code unknown_size;

@@ -18,11 +18,11 @@ std::shared_ptr<const EnvMapEntry> EnvMapRegistry::add(const std::string& name, 
                                                          std::move(map), std::chrono::system_clock::now()});
   std::lock_guard lock(mutex_);
   if (entries_.count(name))
-    throw api::ApiError(409, "conflict", "an environment map named '" + name + "' exists");
+    throw api::ApiError(api::ErrorCode::Conflict, "an environment map named '" + name + "' exists");
   if (int64_t(entries_.size()) >= max_entries_)
-    throw api::ApiError(507, "insufficient_storage",
-                        "the server holds the maximum number of maps (" + std::to_string(max_entries_) +
-                            "); delete one first");
+    throw api::ApiError(api::ErrorCode::InsufficientStorage, "the server holds the maximum number of maps (" +
+                                                                 std::to_string(max_entries_) +
+                                                                 "); delete one first");
   entries_.emplace(name, entry);
   return entry;
 }

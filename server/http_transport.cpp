@@ -69,9 +69,9 @@ void answer_and_close(ConnectionStream& stream, const HeadError& error) {
   std::string ip;
   int port = 0;
   stream.get_remote_ip_and_port(ip, port);
-  spdlog::debug("{}:{} answered {} {}: {}", ip, port, error.status, error.code, error.message);
-  if (stream.write_all(raw_error_response(error.status, error.code, error.message)))
-    stream.close_gracefully(kLinger);
+  spdlog::debug("{}:{} answered {} {}: {}", ip, port, api::http_status(error.code),
+                api::code_name(error.code), error.message);
+  if (stream.write_all(raw_error_response(error.code, error.message))) stream.close_gracefully(kLinger);
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ void HttpTransport::admit(int fd, const std::string& ip, int port) {
   }
   if (!refusal.empty()) {
     spdlog::debug("{}:{} refused: {}", ip, port, refusal);
-    return refuse(fd, raw_error_response(503, "too_many_connections", refusal, "Retry-After: 1\r\n"));
+    return refuse(fd, raw_error_response(api::ErrorCode::TooManyConnections, refusal, "Retry-After: 1\r\n"));
   }
   const int one = 1;
   setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
@@ -250,7 +250,7 @@ bool HttpTransport::read_head(ConnectionStream& stream, std::chrono::steady_cloc
         break;
       case ConnectionStream::Fill::TimedOut:
         answer_and_close(stream,
-                         {408, "request_timeout",
+                         {api::ErrorCode::RequestTimeout,
                           fmt::format("the request head did not arrive within {} s (--header-timeout-s)",
                                       limits_.header_timeout.count())});
         return false;

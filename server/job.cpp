@@ -9,24 +9,6 @@
 namespace lp::server {
 namespace {
 
-const char* error_code(ErrorKind kind) {
-  switch (kind) {
-    case ErrorKind::InvalidArgument:
-      return "invalid_argument";
-    case ErrorKind::Unsupported:
-      return "unsupported";
-    case ErrorKind::Corrupt:
-      return "corrupt";
-    case ErrorKind::InvalidData:
-      return "invalid_data";
-    case ErrorKind::TooLarge:
-      return "too_large";
-    case ErrorKind::NotFound:
-      return "not_found";
-  }
-  return "internal";
-}
-
 std::string iso8601(std::chrono::system_clock::time_point t) {
   const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
   std::tm utc{};
@@ -162,6 +144,10 @@ void Job::finish(JobStatus status, std::optional<JobError> error) {
   finished_cv_.notify_all();
 }
 
+void Job::failed(api::ErrorCode code, const std::string& message) {
+  finish(JobStatus::Failed, JobError{std::string(api::code_name(code)), message});
+}
+
 void Job::execute() {
   if (!start()) return;
   try {
@@ -172,11 +158,11 @@ void Job::execute() {
                          : JobStatus::Cancelled,
            std::nullopt);
   } catch (const Error& e) {
-    finish(JobStatus::Failed, JobError{error_code(e.kind()), e.what()});
+    failed(api::error_code_for(e.kind()), e.what());
   } catch (const std::exception& e) {
-    finish(JobStatus::Failed, JobError{"internal", e.what()});
+    failed(api::ErrorCode::Internal, e.what());
   } catch (...) {
-    finish(JobStatus::Failed, JobError{"internal", "unknown error"});
+    failed(api::ErrorCode::Internal, "unknown error");
   }
 }
 

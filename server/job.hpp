@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include "api/error_codes.hpp"
+
 namespace lp::server {
 
 // Interrupted: stopped by a shutdown (or found unfinished after a crash); it can be resumed as a new run.
@@ -21,7 +23,7 @@ std::optional<JobStatus> parse_status(const std::string& name);  // inverse of s
 bool is_finished(JobStatus status);                              // done, failed, cancelled or interrupted
 
 struct JobError {
-  std::string code;  // like the API error codes: "invalid_argument", "not_found", "internal", ...
+  std::string code;  // a name of api/error_codes.hpp ("corrupt", "not_found", "internal", ...)
   std::string message;
 };
 
@@ -90,6 +92,7 @@ class Job {
   void execute();
   bool start();  // queued -> running; false if it was cancelled meanwhile
   void finish(JobStatus status, std::optional<JobError> error);
+  void failed(api::ErrorCode code, const std::string& message);
   // Queued -> `status` (true); otherwise nothing.
   bool end_if_queued(JobStatus status);
 

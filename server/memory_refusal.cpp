@@ -7,9 +7,10 @@ namespace lp::server {
 void send_memory_refusal(httplib::Response& res, const MemoryBudgetError& error) {
   if (error.transient()) {
     res.set_header("Retry-After", std::to_string(kMemoryRetryAfterS));
-    send_error(res, 503, "memory_busy", std::string(error.what()) + "; retry later (--max-memory-mb)");
+    send_error(res, api::ErrorCode::MemoryBusy,
+               std::string(error.what()) + "; retry later (--max-memory-mb)");
   } else {
-    send_error(res, 507, "insufficient_memory",
+    send_error(res, api::ErrorCode::InsufficientMemory,
                std::string(error.what()) +
                    "; delete maps or finished renders to make room, or start the server with a larger "
                    "--max-memory-mb");

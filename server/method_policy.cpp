@@ -15,7 +15,7 @@ bool refuse_method(const Router& router, const httplib::Request& req, httplib::R
   const std::string list = api::join(allowed, ", ");
   res.set_header("Allow", list);
   send_error(
-      res, 405, "method_not_allowed",
+      res, api::ErrorCode::MethodNotAllowed,
       api::excerpt(req.method) + " is not allowed on " + api::excerpt(req.path) + " (allowed: " + list + ")");
   return true;
 }

@@ -31,10 +31,11 @@ const char* reason_phrase(int status) {
 
 }  // namespace
 
-std::string raw_error_response(int status, const std::string& code, const std::string& message,
+std::string raw_error_response(api::ErrorCode code, const std::string& message,
                                const std::string& extra_headers) {
   httplib::Response res;
-  send_error(res, status, code, message);
+  send_error(res, code, message);
+  const int status = res.status;
   return fmt::format(
       "HTTP/1.1 {} {}\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: "
       "close\r\n{}\r\n{}",

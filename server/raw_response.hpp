@@ -3,11 +3,13 @@
 // connection closed after them.
 #include <string>
 
+#include "api/error_codes.hpp"
+
 namespace lp::server {
 
 // A complete HTTP/1.1 response with {"error":{"code":..,"message":..}} and Connection: close;
 // `extra_headers` are whole header lines, each ending in \r\n.
-std::string raw_error_response(int status, const std::string& code, const std::string& message,
+std::string raw_error_response(api::ErrorCode code, const std::string& message,
                                const std::string& extra_headers = {});
 
 }  // namespace lp::server

@@ -26,13 +26,7 @@ int64_t resolve_meshes(render::SceneDesc& scene, const Options& options) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;
     const std::string field = fmt::format("scene.objects[{}].path", i);
-    const std::string relative = mesh->path.string();
-    try {
-      mesh->path = resolve_in_data_dir(options, relative, field);
-    } catch (const api::ApiError& e) {
-      if (e.status() != 404) throw;
-      throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
-    }
+    mesh->path = resolve_in_data_dir(options, mesh->path.string(), field);
     try {
       triangles += render::check_obj_file(mesh->path, limits);
     } catch (const Error& e) {

@@ -64,12 +64,12 @@ std::vector<std::string_view> split_lines(std::string_view head) {
   return lines;
 }
 
-CheckedHead reject(int status, std::string code, std::string message) {
-  return {std::nullopt, {status, std::move(code), std::move(message)}};
+CheckedHead reject(api::ErrorCode code, std::string message) {
+  return {std::nullopt, {code, std::move(message)}};
 }
 
 CheckedHead bad_request(std::string message) {
-  return reject(400, "bad_request", std::move(message));
+  return reject(api::ErrorCode::BadRequest, std::move(message));
 }
 
 // What the header lines say about the body, gathered while the head is rebuilt.
@@ -99,17 +99,17 @@ std::optional<CheckedHead> check_request_line(std::string_view line) {
                          version = line.substr(sp2 + 1);
   if (!is_token(method) || target.empty()) return bad_request("malformed request line");
   if (version != "HTTP/1.1" && version != "HTTP/1.0")
-    return reject(505, "http_version_not_supported", "only HTTP/1.0 and HTTP/1.1 are served");
+    return reject(api::ErrorCode::HttpVersionNotSupported, "only HTTP/1.0 and HTTP/1.1 are served");
   if (path_has_control_byte(target))
-    return reject(400, "invalid_path",
+    return reject(api::ErrorCode::InvalidPath,
                   "the path holds a control character (a byte below 0x20 or 0x7F, e.g. %00)");
   return std::nullopt;
 }
 
 }  // namespace
 
-HeadScanner::State HeadScanner::fail(int status, std::string code, std::string message) {
-  error_ = {status, std::move(code), std::move(message)};
+HeadScanner::State HeadScanner::fail(api::ErrorCode code, std::string message) {
+  error_ = {code, std::move(message)};
   return State::Error;
 }
 
@@ -119,20 +119,20 @@ HeadScanner::State HeadScanner::scan(std::string_view input) {
     const size_t length = pos_ - line_start_;
     if (c != '\n') {
       if (lines_ == 0 && length > kMaxRequestLineBytes)
-        return fail(414, "uri_too_long",
+        return fail(api::ErrorCode::UriTooLong,
                     fmt::format("the request line is over {} bytes", kMaxRequestLineBytes));
       if (length > kMaxHeaderLineBytes)
-        return fail(431, "header_too_large",
+        return fail(api::ErrorCode::HeaderTooLarge,
                     fmt::format("a header line is over {} bytes", kMaxHeaderLineBytes));
       if (pos_ > kMaxHeadBytes)
-        return fail(431, "header_too_large",
+        return fail(api::ErrorCode::HeaderTooLarge,
                     fmt::format("the request headers are over {} bytes", kMaxHeadBytes));
       continue;
     }
     const bool blank = length == 1 || (length == 2 && input[pos_ - 2] == '\r');
     if (blank && lines_ > 0) return State::Complete;
     if (++lines_ > kMaxHeaderLines + 1)
-      return fail(431, "header_too_large",
+      return fail(api::ErrorCode::HeaderTooLarge,
                   fmt::format("the request has over {} header lines", kMaxHeaderLines));
     line_start_ = pos_;
   }
@@ -164,7 +164,7 @@ CheckedHead check_request_head(std::string_view head, uint64_t max_body) {
       if (auto error = check_content_length(value, body)) return *error;
     } else if (iequals(name, "Transfer-Encoding")) {
       if (body.transfer_encoding)
-        return reject(501, "not_implemented", "only one transfer coding, chunked, is accepted");
+        return reject(api::ErrorCode::NotImplemented, "only one transfer coding, chunked, is accepted");
       body.transfer_encoding = value;
       continue;  // the transport decodes the body: httplib reads it as a body that ends with the stream
     } else if (iequals(name, "Range") || iequals(name, "If-Range")) {
@@ -176,13 +176,13 @@ CheckedHead check_request_head(std::string_view head, uint64_t max_body) {
 
   if (body.transfer_encoding) {
     if (!iequals(*body.transfer_encoding, "chunked"))
-      return reject(501, "not_implemented", "only the chunked transfer coding is accepted");
+      return reject(api::ErrorCode::NotImplemented, "only the chunked transfer coding is accepted");
     if (body.content_length)
       return bad_request("a request cannot have both Content-Length and Transfer-Encoding");
     if (http10) return bad_request("HTTP/1.0 requests cannot use Transfer-Encoding");
     out.body = {BodyFraming::Kind::Chunked, 0, max_body};
   } else if (body.content_length) {
-    if (*body.content_length > max_body) return reject(413, "payload_too_large", kBodyTooLargeMessage);
+    if (*body.content_length > max_body) return reject(api::ErrorCode::PayloadTooLarge, kBodyTooLargeMessage);
     out.body = {BodyFraming::Kind::Length, *body.content_length, max_body};
   }
   return {std::move(out), {}};

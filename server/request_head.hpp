@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "api/error_codes.hpp"
 #include "server/body_framing.hpp"
 
 namespace lp::server {
@@ -20,8 +21,7 @@ inline constexpr size_t kMaxHeadBytes = 64 * 1024;    // request line and header
 
 // An answer the transport gives itself, in the JSON error shape.
 struct HeadError {
-  int status = 400;
-  std::string code;
+  api::ErrorCode code = api::ErrorCode::BadRequest;
   std::string message;
 };
 
@@ -35,7 +35,7 @@ class HeadScanner {
   const HeadError& error() const { return error_; }
 
  private:
-  State fail(int status, std::string code, std::string message);
+  State fail(api::ErrorCode code, std::string message);
 
   size_t pos_ = 0;
   size_t line_start_ = 0;

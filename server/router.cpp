@@ -29,58 +29,22 @@ std::string to_regex(const std::string& path) {
   return out;
 }
 
-int status_for(ErrorKind kind) {
-  switch (kind) {
-    case ErrorKind::InvalidArgument:
-      return 400;
-    case ErrorKind::Unsupported:
-      return 415;
-    case ErrorKind::Corrupt:
-      return 422;
-    case ErrorKind::InvalidData:
-      return 422;
-    case ErrorKind::TooLarge:
-      return 413;
-    case ErrorKind::NotFound:
-      return 404;
-  }
-  return 500;
-}
-
-const char* code_for(ErrorKind kind) {
-  switch (kind) {
-    case ErrorKind::InvalidArgument:
-      return "invalid_argument";
-    case ErrorKind::Unsupported:
-      return "unsupported_media_type";
-    case ErrorKind::Corrupt:
-      return "corrupt_image";
-    case ErrorKind::InvalidData:
-      return "invalid_image_data";
-    case ErrorKind::TooLarge:
-      return "too_large";
-    case ErrorKind::NotFound:
-      return "not_found";
-  }
-  return "internal";
-}
-
 Handler guarded(Handler handler) {
   return [handler = std::move(handler)](const httplib::Request& req, httplib::Response& res) {
     try {
       handler(req, res);
     } catch (const api::ApiError& e) {
-      send_error(res, e.status(), e.code(), e.what());
+      send_error(res, e.code(), e.what());
     } catch (const MemoryBudgetError& e) {
       send_memory_refusal(res, e);
     } catch (const Error& e) {
-      send_error(res, status_for(e.kind()), code_for(e.kind()), e.what());
+      send_error(res, api::error_code_for(e.kind()), e.what());
     } catch (const std::bad_alloc&) {
       spdlog::error("{} {}: out of memory", req.method, req.path);
-      send_error(res, 507, "insufficient_storage", "the server ran out of memory for this request");
+      send_error(res, api::ErrorCode::InsufficientStorage, "the server ran out of memory for this request");
     } catch (const std::exception& e) {
       spdlog::error("{} {}: {}", req.method, req.path, e.what());
-      send_error(res, 500, "internal", e.what());
+      send_error(res, api::ErrorCode::Internal, e.what());
     }
   };
 }
@@ -92,7 +56,7 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler, PostBody bo
   return [handler = guarded(std::move(handler)), body](const httplib::Request& req, httplib::Response& res,
                                                        const httplib::ContentReader& reader) {
     if (req.is_multipart_form_data()) {
-      send_error(res, 415, "unsupported_media_type",
+      send_error(res, api::ErrorCode::UnsupportedMediaType,
                  "send the file as the raw request body, not as multipart/form-data");
       return;
     }
@@ -103,13 +67,13 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler, PostBody bo
     });
     if (!complete) {
       if (res.status == 413 || request_body_over_limit())
-        send_error(res, 413, "payload_too_large", kBodyTooLargeMessage);
+        send_error(res, api::ErrorCode::PayloadTooLarge, kBodyTooLargeMessage);
       else
-        send_error(res, 400, "bad_request", "the request body could not be read");
+        send_error(res, api::ErrorCode::BadRequest, "the request body could not be read");
       return;
     }
     if (body == PostBody::Json && !with.body.empty() && !has_json_content_type(with)) {
-      send_error(res, 415, "unsupported_media_type",
+      send_error(res, api::ErrorCode::UnsupportedMediaType,
                  "the body of " + req.method + " " + req.path +
                      " is JSON: send it as Content-Type: application/json");
       return;
@@ -169,7 +133,7 @@ bool has_json_content_type(const httplib::Request& req) {
 }
 
 std::string path_param(const httplib::Request& req, size_t n) {
-  if (n >= req.matches.size()) throw api::ApiError(500, "internal", "missing path parameter");
+  if (n >= req.matches.size()) throw api::ApiError(api::ErrorCode::Internal, "missing path parameter");
   return req.matches[n].str();
 }
 
@@ -178,8 +142,8 @@ void send_json(httplib::Response& res, const nlohmann::json& body, int status) {
   res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
 }
 
-void send_error(httplib::Response& res, int status, const std::string& code, const std::string& message) {
-  send_json(res, {{"error", {{"code", code}, {"message", message}}}}, status);
+void send_error(httplib::Response& res, api::ErrorCode code, const std::string& message) {
+  send_json(res, {{"error", {{"code", api::code_name(code)}, {"message", message}}}}, api::http_status(code));
 }
 
 }  // namespace lp::server

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "api/error_codes.hpp"
+
 namespace lp::server {
 
 struct Route {
@@ -51,8 +53,8 @@ bool has_json_content_type(const httplib::Request& req);
 // Path parameter n (1-based, in order of appearance) of a route registered with {name} segments.
 std::string path_param(const httplib::Request& req, size_t n);
 
-// Writes {"error":{"code":..,"message":..}} with the status.
-void send_error(httplib::Response& res, int status, const std::string& code, const std::string& message);
+// Writes {"error":{"code":..,"message":..}} with the code's status.
+void send_error(httplib::Response& res, api::ErrorCode code, const std::string& message);
 void send_json(httplib::Response& res, const nlohmann::json& body, int status = 200);
 
 }  // namespace lp::server

@@ -27,7 +27,7 @@ InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
 bool is_json_body(const httplib::Request& req) {
   if (has_json_content_type(req)) return true;
   if (!req.body.empty() && req.body.front() == '{')
-    throw api::ApiError(415, "unsupported_media_type",
+    throw api::ApiError(api::ErrorCode::UnsupportedMediaType,
                         "a JSON body (load by path) must be sent as Content-Type: application/json");
   return false;
 }
@@ -42,7 +42,7 @@ std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Req
   const auto name = api::query_string(req.params, "name");
   if (!name) throw api::invalid_field("name", "is required (?name=NAME) when the body is an image");
   if (req.body.empty())
-    throw api::ApiError(400, "empty_body", "the request body is empty: send an EXR, PFM or HDR file");
+    throw api::ApiError(api::ErrorCode::EmptyBody, "the request body is empty: send an EXR, PFM or HDR file");
   const auto* bytes = reinterpret_cast<const uint8_t*>(req.body.data());
   return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload", invalid_pixel_policy(req));
 }

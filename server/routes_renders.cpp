@@ -31,7 +31,7 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
 
 void send_queue_full(const App& app, httplib::Response& res) {
   res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
-  send_error(res, 503, "queue_full",
+  send_error(res, api::ErrorCode::QueueFull,
              fmt::format("{} renders are running and {} queued (the limit); retry later",
                          app.renders.running_count(), app.renders.queued_count()));
 }
@@ -86,7 +86,7 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   const RenderImage current = job->image();
   if (!current.image)
     throw api::ApiError(
-        409, "no_image_yet",
+        api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
   const Image& pixels = *current.image;
   auto memory =
@@ -174,7 +174,7 @@ void events(App& app, const httplib::Request& req, httplib::Response& res) {
   state->slot = std::make_unique<StreamSlot>(app.event_streams, app.options.max_event_streams);
   if (!state->slot->acquired()) {
     res.set_header("Retry-After", "5");
-    send_error(res, 503, "too_many_streams",
+    send_error(res, api::ErrorCode::TooManyStreams,
                fmt::format("{} event streams are open (the limit); poll GET /api/v1/renders/{} instead",
                            app.options.max_event_streams, state->job->id()));
     return;

@@ -33,11 +33,11 @@ Server::Server(App& app)
     AccessLog::start_request();
     if (!accepting_.load()) {
       res.set_header("Connection", "close");
-      send_error(res, 503, "shutting_down", "the server is shutting down");
+      send_error(res, api::ErrorCode::ShuttingDown, "the server is shutting down");
       return httplib::Server::HandlerResponse::Handled;
     }
     if (const auto refusal = browser_.refusal(req)) {
-      send_error(res, refusal->status(), refusal->code(), refusal->what());
+      send_error(res, refusal->code(), refusal->what());
       return httplib::Server::HandlerResponse::Handled;
     }
     return browser_.answer_cors(req, res, router_) ? httplib::Server::HandlerResponse::Handled
@@ -51,13 +51,16 @@ Server::Server(App& app)
     if ((res.status == 404 || res.status == 400 || res.status == 405) && refuse_method(router_, req, res))
       return;
     if (res.status == 404)
-      send_error(res, 404, "not_found", "no endpoint " + req.method + " " + req.path);
+      send_error(res, api::ErrorCode::NotFound, "no endpoint " + req.method + " " + req.path);
     else if (res.status == 413)
-      send_error(res, 413, "payload_too_large", kBodyTooLargeMessage);
+      send_error(res, api::ErrorCode::PayloadTooLarge, kBodyTooLargeMessage);
     else if (res.status == 405)
-      send_error(res, 405, "method_not_allowed", "method not allowed");
-    else
-      send_error(res, res.status, "bad_request", "the request could not be handled");
+      send_error(res, api::ErrorCode::MethodNotAllowed, "method not allowed");
+    else {
+      const int status = res.status;  // httplib's own refusal (a bad Range, ...) keeps its status
+      send_error(res, api::ErrorCode::BadRequest, "the request could not be handled");
+      res.status = status;
+    }
   });
   http_.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
     std::string message = "internal error";
@@ -67,7 +70,7 @@ Server::Server(App& app)
       message = e.what();
     } catch (...) {
     }
-    send_error(res, 500, "internal", message);
+    send_error(res, api::ErrorCode::Internal, message);
   });
 
   register_meta_routes(router_, app_);

@@ -56,8 +56,8 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   return job;
 }
 
-api::ApiError cannot_resume(const RenderJob& job, const std::string& code, const std::string& why) {
-  return api::ApiError(409, code, fmt::format("render '{}' cannot resume: {}", job.id(), why));
+api::ApiError cannot_resume(const RenderJob& job, api::ErrorCode code, const std::string& why) {
+  return api::ApiError(code, fmt::format("render '{}' cannot resume: {}", job.id(), why));
 }
 
 }  // namespace
@@ -104,7 +104,7 @@ void restore_renders(App& app) {
 
 std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
   if (job->status() != JobStatus::Interrupted)
-    throw cannot_resume(*job, "not_interrupted",
+    throw cannot_resume(*job, api::ErrorCode::NotInterrupted,
                         fmt::format("it is {}; only interrupted renders resume", status_name(job->status())));
   RenderRecord record = job->record();
   api::RenderRequest request;
@@ -113,16 +113,16 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
     request = api::parse_render_request(record.request, render_limits(app.options));
     triangles = resolve_meshes(request.scene, app.options);
   } catch (const api::ApiError& e) {
-    throw cannot_resume(*job, "cannot_resume", e.what());
+    throw cannot_resume(*job, api::ErrorCode::CannotResume, e.what());
   }
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap)
     throw cannot_resume(
-        *job, "envmap_missing",
+        *job, api::ErrorCode::EnvmapMissing,
         fmt::format("no map '{}' is loaded; load it under that name and retry", request.envmap));
   if (record.spp_done > 0 && envmap_fingerprint(*envmap->map) != record.envmap_fingerprint)
     throw cannot_resume(
-        *job, "envmap_changed",
+        *job, api::ErrorCode::EnvmapChanged,
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
   auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
   auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
@@ -131,7 +131,7 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
   next->save_record();
   if (!app.renders.submit(next)) {
     if (app.renders.find(job->id()) != job)
-      throw cannot_resume(*job, "not_interrupted", "it was resumed already");
+      throw cannot_resume(*job, api::ErrorCode::NotInterrupted, "it was resumed already");
     job->save_record();
     return nullptr;
   }

@@ -1,5 +1,6 @@
 #pragma once
-// One exception type for the engine; `kind` lets a caller (the server) choose a status code.
+// One exception type for the engine. `kind` says what went wrong; api/error_codes.hpp gives each kind
+// the HTTP status and code a response or a failed render job reports.
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,8 @@ enum class ErrorKind {
   InvalidData,      // readable, but the values are unusable (NaN, Inf, negative, all zero)
   TooLarge,         // over a configured limit
   NotFound,         // a file or resource is missing
+  WriteFailed,      // a file could not be written
+  Internal,         // a failure of our own or of a library (the ray tracing device), not of the input
 };
 
 class Error : public std::runtime_error {

@@ -9,12 +9,20 @@ namespace lp {
 // How an RGB radiance becomes the scalar that sampling and median cut weigh by.
 enum class LuminanceMode { Average, Rec709 };
 
+// The weights of linear R, G and B in the relative luminance of Rec. 709 (sRGB) primaries.
+struct RgbWeights {
+  double r, g, b;
+};
+inline constexpr RgbWeights kRec709Weights{0.2126, 0.7152, 0.0722};
+
 inline float luminance(Rgb c, LuminanceMode mode) {
-  return mode == LuminanceMode::Average ? (c.x + c.y + c.z) * (1.0f / 3.0f)
-                                        : 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+  if (mode == LuminanceMode::Average) return (c.x + c.y + c.z) * (1.0f / 3.0f);
+  return float(kRec709Weights.r) * c.x + float(kRec709Weights.g) * c.y + float(kRec709Weights.b) * c.z;
 }
 
-inline const char* luminance_mode_name(LuminanceMode m) { return m == LuminanceMode::Average ? "average" : "rec709"; }
+inline const char* luminance_mode_name(LuminanceMode m) {
+  return m == LuminanceMode::Average ? "average" : "rec709";
+}
 
 inline std::optional<LuminanceMode> parse_luminance_mode(std::string_view s) {
   if (s == "average") return LuminanceMode::Average;

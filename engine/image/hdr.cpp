@@ -159,7 +159,7 @@ std::vector<uint8_t> write_hdr(const Image& image) {
   std::vector<uint8_t> out;
   if (!stbi_write_hdr_to_func(append_to_byte_vector, &out, image.width(), image.height(), 3,
                               image.data().data()))
-    throw Error(ErrorKind::InvalidArgument, "cannot encode Radiance HDR");
+    throw Error(ErrorKind::Internal, "cannot encode Radiance HDR");
   return out;
 }
 

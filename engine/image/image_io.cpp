@@ -11,10 +11,14 @@ namespace lp {
 
 const char* format_name(ImageFormat f) {
   switch (f) {
-    case ImageFormat::Exr: return "exr";
-    case ImageFormat::Pfm: return "pfm";
-    case ImageFormat::Hdr: return "hdr";
-    case ImageFormat::Png: return "png";
+    case ImageFormat::Exr:
+      return "exr";
+    case ImageFormat::Pfm:
+      return "pfm";
+    case ImageFormat::Hdr:
+      return "hdr";
+    case ImageFormat::Png:
+      return "png";
   }
   return "?";
 }
@@ -27,10 +31,14 @@ std::optional<ImageFormat> parse_format(const std::string& name) {
 
 const char* format_mime_type(ImageFormat f) {
   switch (f) {
-    case ImageFormat::Exr: return "image/x-exr";
-    case ImageFormat::Pfm: return "image/x-portable-floatmap";
-    case ImageFormat::Hdr: return "image/vnd.radiance";
-    case ImageFormat::Png: return "image/png";
+    case ImageFormat::Exr:
+      return "image/x-exr";
+    case ImageFormat::Pfm:
+      return "image/x-portable-floatmap";
+    case ImageFormat::Hdr:
+      return "image/vnd.radiance";
+    case ImageFormat::Png:
+      return "image/png";
   }
   return "application/octet-stream";
 }
@@ -40,7 +48,8 @@ std::optional<ImageFormat> detect_format(std::span<const uint8_t> b) {
     return b.size() >= magic.size() && std::memcmp(b.data(), magic.data(), magic.size()) == 0;
   };
   if (starts_with("\x76\x2f\x31\x01")) return ImageFormat::Exr;
-  if (b.size() >= 3 && b[0] == 'P' && (b[1] == 'F' || b[1] == 'f') && std::isspace(b[2])) return ImageFormat::Pfm;
+  if (b.size() >= 3 && b[0] == 'P' && (b[1] == 'F' || b[1] == 'f') && std::isspace(b[2]))
+    return ImageFormat::Pfm;
   if (starts_with("#?RADIANCE") || starts_with("#?RGBE")) return ImageFormat::Hdr;
   if (starts_with("\x89PNG\r\n\x1a\n")) return ImageFormat::Png;
   return std::nullopt;
@@ -49,12 +58,19 @@ std::optional<ImageFormat> detect_format(std::span<const uint8_t> b) {
 DecodedImage read_image(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   const auto format = detect_format(bytes);
   if (!format || *format == ImageFormat::Png)
-    throw Error(ErrorKind::Unsupported, "not an image format we read (expected OpenEXR, PFM or Radiance HDR)");
+    throw Error(ErrorKind::Unsupported,
+                "not an image format we read (expected OpenEXR, PFM or Radiance HDR)");
   Image image;
   switch (*format) {
-    case ImageFormat::Exr: image = read_exr(bytes, limits); break;
-    case ImageFormat::Pfm: image = read_pfm(bytes, limits); break;
-    default: image = read_hdr(bytes, limits); break;
+    case ImageFormat::Exr:
+      image = read_exr(bytes, limits);
+      break;
+    case ImageFormat::Pfm:
+      image = read_pfm(bytes, limits);
+      break;
+    default:
+      image = read_hdr(bytes, limits);
+      break;
   }
   return {std::move(image), *format};
 }
@@ -68,10 +84,14 @@ DecodedImage read_image_file(const std::filesystem::path& path, const ImageLimit
 
 std::vector<uint8_t> write_image(const Image& image, ImageFormat format, const ToneMap& tone) {
   switch (format) {
-    case ImageFormat::Exr: return write_exr(image);
-    case ImageFormat::Pfm: return write_pfm(image);
-    case ImageFormat::Hdr: return write_hdr(image);
-    case ImageFormat::Png: return write_png(image, tone);
+    case ImageFormat::Exr:
+      return write_exr(image);
+    case ImageFormat::Pfm:
+      return write_pfm(image);
+    case ImageFormat::Hdr:
+      return write_hdr(image);
+    case ImageFormat::Png:
+      return write_png(image, tone);
   }
   throw Error(ErrorKind::InvalidArgument, "unknown output format");
 }
@@ -79,7 +99,7 @@ std::vector<uint8_t> write_image(const Image& image, ImageFormat format, const T
 void write_file(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-  if (!out) throw Error(ErrorKind::NotFound, "cannot write " + path.string());
+  if (!out) throw Error(ErrorKind::WriteFailed, "cannot write " + path.string());
 }
 
 }  // namespace lp

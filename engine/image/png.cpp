@@ -1,6 +1,5 @@
 // 8-bit PNG previews: tone mapped linear radiance, through stb_image_write.
 #include <stb_image_write.h>
-
 #include <tbb/parallel_for.h>
 
 #include "engine/core/error.hpp"
@@ -12,9 +11,10 @@ std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone) {
   const ToneMapper map(tone);
   const auto src = image.data();
   std::vector<uint8_t> pixels(src.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, src.size(), 1 << 16), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i != r.end(); ++i) pixels[i] = map(src[i]);
-  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, src.size(), 1 << 16),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t i = r.begin(); i != r.end(); ++i) pixels[i] = map(src[i]);
+                    });
   return pixels;
 }
 
@@ -22,10 +22,11 @@ std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb8, int width, i
   // A fast zlib level: previews are requested interactively, latency matters more than size.
   static const bool level_set = (stbi_write_png_compression_level = 3, true);
   (void)level_set;
-  if (rgb8.size() != size_t(width) * size_t(height) * 3) throw Error(ErrorKind::InvalidArgument, "PNG buffer size mismatch");
+  if (rgb8.size() != size_t(width) * size_t(height) * 3)
+    throw Error(ErrorKind::Internal, "PNG buffer size mismatch");
   std::vector<uint8_t> out;
   if (!stbi_write_png_to_func(append_to_byte_vector, &out, width, height, 3, rgb8.data(), width * 3))
-    throw Error(ErrorKind::InvalidArgument, "cannot encode PNG");
+    throw Error(ErrorKind::Internal, "cannot encode PNG");
   return out;
 }
 

@@ -1,10 +1,10 @@
 #include "engine/mediancut/light_placement.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-
-#include <tbb/parallel_for.h>
 
 #include "engine/envmap/latlong.hpp"
 
@@ -23,7 +23,7 @@ struct LuminanceWeights {
 
 LuminanceWeights luminance_weights(LuminanceMode mode) {
   if (mode == LuminanceMode::Average) return {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};
-  return {0.2126, 0.7152, 0.0722};
+  return {kRec709Weights.r, kRec709Weights.g, kRec709Weights.b};
 }
 
 // Per channel, the sum of a row segment's radiance and of radiance * x (pixel centres). This pass
@@ -106,9 +106,12 @@ RegionSums sum_region(const Image& image, const Region& r, const std::vector<dou
                       LightPlacement placement, LuminanceMode mode) {
   const LuminanceWeights k = luminance_weights(mode);
   switch (placement) {
-    case LightPlacement::Centroid: return sum_region_linear<true>(image, r, omega, k);
-    case LightPlacement::CentroidSquared: return sum_region_squared(image, r, omega, k);
-    case LightPlacement::Center: break;
+    case LightPlacement::Centroid:
+      return sum_region_linear<true>(image, r, omega, k);
+    case LightPlacement::CentroidSquared:
+      return sum_region_squared(image, r, omega, k);
+    case LightPlacement::Center:
+      break;
   }
   return sum_region_linear<false>(image, r, omega, k);
 }
@@ -117,9 +120,12 @@ RegionSums sum_region(const Image& image, const Region& r, const std::vector<dou
 
 const char* light_placement_name(LightPlacement p) {
   switch (p) {
-    case LightPlacement::Centroid: return "centroid";
-    case LightPlacement::CentroidSquared: return "centroid_squared";
-    case LightPlacement::Center: return "center";
+    case LightPlacement::Centroid:
+      return "centroid";
+    case LightPlacement::CentroidSquared:
+      return "centroid_squared";
+    case LightPlacement::Center:
+      return "center";
   }
   return "centroid";
 }
@@ -131,8 +137,7 @@ std::optional<LightPlacement> parse_light_placement(std::string_view s) {
 }
 
 double power_luminance(const Power& p, LuminanceMode mode) {
-  return mode == LuminanceMode::Average ? (p[0] + p[1] + p[2]) / 3.0
-                                        : 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+  return mode == LuminanceMode::Average ? (p[0] + p[1] + p[2]) / 3.0 : luminance_weights(mode)(p.data());
 }
 
 std::vector<MedianCutLight> place_lights(const Image& image, const std::vector<Region>& regions,

@@ -17,12 +17,21 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw Error(ErrorKind::InvalidArgument, "material: " + what);
 }
 
-bool finite(Rgb c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
-bool in_unit(Rgb c) { return finite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x <= 1 && c.y <= 1 && c.z <= 1; }
-bool positive(Rgb c) { return finite(c) && c.x > 0 && c.y > 0 && c.z > 0; }
-bool non_negative(Rgb c) { return finite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0; }
-bool valid_ior(float ior) { return std::isfinite(ior) && ior > 0 && ior <= 10; }
-bool valid_roughness(float r) { return std::isfinite(r) && r >= 0 && r <= 1; }
+bool in_unit(Rgb c) {
+  return finite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x <= 1 && c.y <= 1 && c.z <= 1;
+}
+bool positive(Rgb c) {
+  return finite(c) && c.x > 0 && c.y > 0 && c.z > 0;
+}
+bool non_negative(Rgb c) {
+  return finite(c) && c.x >= 0 && c.y >= 0 && c.z >= 0;
+}
+bool valid_ior(float ior) {
+  return std::isfinite(ior) && ior > 0 && ior <= 10;
+}
+bool valid_roughness(float r) {
+  return std::isfinite(r) && r >= 0 && r <= 1;
+}
 
 struct Factory {
   std::unique_ptr<Bsdf> operator()(const DiffuseMaterial& m) const {
@@ -53,6 +62,8 @@ struct Factory {
 
 }  // namespace
 
-std::unique_ptr<Bsdf> make_bsdf(const Material& material) { return std::visit(Factory{}, material); }
+std::unique_ptr<Bsdf> make_bsdf(const Material& material) {
+  return std::visit(Factory{}, material);
+}
 
 }  // namespace lp::render

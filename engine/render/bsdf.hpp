@@ -32,7 +32,7 @@ class Bsdf {
   virtual std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const = 0;
 
   // False if every lobe is delta (light sampling is then useless).
-  virtual bool has_smooth_part() const = 0;
+  virtual bool has_non_delta_lobe() const = 0;
   // True: a reflector that looks the same from both sides (the caller flips the normal towards wo).
   // False: the BSDF distinguishes the outside (z > 0) from the inside (a dielectric).
   virtual bool two_sided() const { return true; }

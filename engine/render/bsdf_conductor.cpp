@@ -4,29 +4,28 @@
 
 namespace lp::render {
 
-// Below this alpha the lobe is treated as a perfect mirror (GGX in float degenerates there).
-inline constexpr float kSmoothAlpha = 1e-3f;
-
 ConductorBsdf::ConductorBsdf(Rgb eta, Rgb k, float roughness)
-    : eta_(eta), k_(k), smooth_(roughness < kSmoothAlpha), ggx_(roughness) {}
+    : eta_(eta), k_(k), delta_specular_(roughness < kDeltaLobeAlpha), ggx_(roughness) {}
 
-Rgb ConductorBsdf::fresnel(float cos_i) const { return fresnel_conductor(cos_i, eta_, k_); }
+Rgb ConductorBsdf::fresnel(float cos_i) const {
+  return fresnel_conductor(cos_i, eta_, k_);
+}
 
 Rgb ConductorBsdf::eval(Vec3 wo, Vec3 wi) const {
-  if (smooth_ || wo.z <= 0 || wi.z <= 0) return {};
+  if (delta_specular_ || wo.z <= 0 || wi.z <= 0) return {};
   const Vec3 h = normalize(wo + wi);
   return fresnel(dot(wo, h)) * (ggx_.d(h) * ggx_.g(wo, wi) / (4.0f * wo.z));
 }
 
 float ConductorBsdf::pdf(Vec3 wo, Vec3 wi) const {
-  if (smooth_ || wo.z <= 0 || wi.z <= 0) return 0;
+  if (delta_specular_ || wo.z <= 0 || wi.z <= 0) return 0;
   const Vec3 h = normalize(wo + wi);
   return ggx_.visible_normal_pdf(wo, h) / (4.0f * dot(wo, h));
 }
 
 std::optional<BsdfSample> ConductorBsdf::sample(Vec3 wo, float, Point2 u) const {
   if (wo.z <= 0) return std::nullopt;
-  if (smooth_) return BsdfSample{{-wo.x, -wo.y, wo.z}, fresnel(wo.z), 1.0f, 1.0f, true};
+  if (delta_specular_) return BsdfSample{{-wo.x, -wo.y, wo.z}, fresnel(wo.z), 1.0f, 1.0f, true};
   const Vec3 h = ggx_.sample_visible_normal(wo, u.x, u.y);
   const float wo_h = dot(wo, h);
   if (wo_h <= 0) return std::nullopt;

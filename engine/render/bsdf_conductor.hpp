@@ -12,13 +12,13 @@ class ConductorBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_smooth_part() const override { return !smooth_; }
+  bool has_non_delta_lobe() const override { return !delta_specular_; }
 
  private:
   Rgb fresnel(float cos_i) const;
 
   Rgb eta_, k_;
-  bool smooth_;
+  bool delta_specular_;  // roughness below kDeltaLobeAlpha: the specular lobe is a mirror (delta)
   Ggx ggx_;
 };
 

@@ -11,7 +11,7 @@ class DielectricBsdf final : public Bsdf {
   Rgb eval(Vec3, Vec3) const override { return {}; }
   float pdf(Vec3, Vec3) const override { return 0; }
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_smooth_part() const override { return false; }
+  bool has_non_delta_lobe() const override { return false; }
   bool two_sided() const override { return false; }
 
  private:

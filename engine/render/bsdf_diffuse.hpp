@@ -10,7 +10,7 @@ class DiffuseBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_smooth_part() const override { return true; }
+  bool has_non_delta_lobe() const override { return true; }
 
  private:
   Rgb albedo_;

@@ -13,7 +13,7 @@ class MirrorBsdf final : public Bsdf {
     if (wo.z <= 0) return std::nullopt;
     return BsdfSample{{-wo.x, -wo.y, wo.z}, color_, 1.0f, 1.0f, true};
   }
-  bool has_smooth_part() const override { return false; }
+  bool has_non_delta_lobe() const override { return false; }
 
  private:
   Rgb color_;

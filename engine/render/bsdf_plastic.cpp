@@ -9,8 +9,6 @@
 namespace lp::render {
 namespace {
 
-inline constexpr float kSmoothAlpha = 1e-3f;
-
 double diffuse_fresnel_reflectance(double ior) {
   constexpr int kSteps = 4096;  // midpoint rule; F is smooth in mu, the error is ~1e-7
   double sum = 0;
@@ -26,12 +24,14 @@ double diffuse_fresnel_reflectance(double ior) {
 PlasticBsdf::PlasticBsdf(Rgb albedo, float ior, float roughness)
     : albedo_(albedo),
       ior_(ior),
-      smooth_(roughness < kSmoothAlpha),
+      delta_specular_(roughness < kDeltaLobeAlpha),
       ggx_(roughness),
       fdr_(float(diffuse_fresnel_reflectance(ior))),
       mean_albedo_((albedo.x + albedo.y + albedo.z) / 3.0f) {}
 
-float PlasticBsdf::fresnel(float cos_i) const { return float(fresnel_dielectric(cos_i, 1.0, ior_)); }
+float PlasticBsdf::fresnel(float cos_i) const {
+  return float(fresnel_dielectric(cos_i, 1.0, ior_));
+}
 
 // Choose the coat in proportion to its reflectance against the base's (1 - F) * albedo.
 float PlasticBsdf::specular_probability(float fresnel_o) const {
@@ -58,7 +58,7 @@ Rgb PlasticBsdf::eval_diffuse(Vec3 wo, Vec3 wi) const {
 Rgb PlasticBsdf::eval(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z <= 0) return {};
   Rgb f = eval_diffuse(wo, wi);
-  if (!smooth_) f += eval_specular(wo, wi);
+  if (!delta_specular_) f += eval_specular(wo, wi);
   return f;
 }
 
@@ -66,7 +66,7 @@ float PlasticBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z <= 0) return 0;
   const float ps = specular_probability(fresnel(wo.z));
   float p = (1.0f - ps) * cosine_hemisphere_pdf(wi.z);
-  if (!smooth_) p += ps * pdf_specular(wo, wi);
+  if (!delta_specular_) p += ps * pdf_specular(wo, wi);
   return p;
 }
 
@@ -76,7 +76,7 @@ std::optional<BsdfSample> PlasticBsdf::sample(Vec3 wo, float u_lobe, Point2 u) c
   const float ps = specular_probability(fo);
   Vec3 wi;
   if (u_lobe < ps) {
-    if (smooth_) return BsdfSample{{-wo.x, -wo.y, wo.z}, Rgb{fo, fo, fo} / ps, ps, 1.0f, true};
+    if (delta_specular_) return BsdfSample{{-wo.x, -wo.y, wo.z}, Rgb{fo, fo, fo} / ps, ps, 1.0f, true};
     const Vec3 h = ggx_.sample_visible_normal(wo, u.x, u.y);
     if (dot(wo, h) <= 0) return std::nullopt;
     wi = reflect(wo, h);

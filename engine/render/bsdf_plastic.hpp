@@ -16,7 +16,7 @@ class PlasticBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_smooth_part() const override { return true; }
+  bool has_non_delta_lobe() const override { return true; }
 
   // The cosine-weighted hemispherical mean of the coat's reflectance, 2 * integral of F(mu) mu dmu.
   float diffuse_fresnel() const { return fdr_; }
@@ -30,7 +30,7 @@ class PlasticBsdf final : public Bsdf {
 
   Rgb albedo_;
   float ior_;
-  bool smooth_;
+  bool delta_specular_;  // roughness below kDeltaLobeAlpha: the specular lobe is a mirror (delta)
   Ggx ggx_;
   float fdr_;
   float mean_albedo_;

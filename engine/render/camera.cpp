@@ -8,8 +8,6 @@
 namespace lp::render {
 namespace {
 
-bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void require(bool ok, const char* what) {
   if (!ok) throw Error(ErrorKind::InvalidArgument, std::string("camera: ") + what);
 }

@@ -10,11 +10,11 @@ namespace lp::render {
 
 struct DirectionalLight {
   Vec3 direction;  // world, unit, towards the light
-  Rgb power;       // irradiance on a surface facing the light
+  Rgb power;       // P_i above (median cut's power of the region) times the lighting intensity
 };
 
-// `count` lights from median cut of the map (engine/mediancut, cached per map), rotated and scaled like `env`.
-// None for a black map. Throws lp::Error(InvalidArgument) if count < 1 or exceeds the map's pixels.
+// `count` lights from median cut of the map (engine/mediancut, cached per map), rotated and scaled like
+// `env`. None for a black map. Throws lp::Error(InvalidArgument) if count < 1 or exceeds the map's pixels.
 std::vector<DirectionalLight> median_cut_lights(const EnvLight& env, int count);
 
 }  // namespace lp::render

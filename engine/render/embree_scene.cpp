@@ -11,23 +11,23 @@ namespace lp::render {
 
 struct EmbreeScene::Object {
   enum class Kind { Sphere, Plane, Mesh } kind;
-  Vec3 center;     // sphere
+  Vec3 center;  // sphere
   float radius = 0;
-  Vec3 normal;     // plane
+  Vec3 normal;  // plane
   TriangleMesh mesh;
 };
 
 namespace {
 
-bool finite(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-void invalid(const std::string& what) { throw Error(ErrorKind::InvalidArgument, what); }
+void invalid(const std::string& what) {
+  throw Error(ErrorKind::InvalidArgument, what);
+}
 
 // One Embree device for the process: devices are thread-safe and costly to create.
 std::shared_ptr<RTCDeviceTy> shared_device() {
   static const std::shared_ptr<RTCDeviceTy> device = [] {
     RTCDevice d = rtcNewDevice(nullptr);
-    if (!d) throw Error(ErrorKind::Unsupported, "cannot create the Embree device");
+    if (!d) throw Error(ErrorKind::Internal, "cannot create the Embree device");
     return std::shared_ptr<RTCDeviceTy>(d, rtcReleaseDevice);
   }();
   return device;
@@ -35,14 +35,16 @@ std::shared_ptr<RTCDeviceTy> shared_device() {
 
 void check_device(RTCDevice device, const char* what) {
   const RTCError e = rtcGetDeviceError(device);
-  if (e != RTC_ERROR_NONE) throw Error(ErrorKind::InvalidArgument, std::string("Embree error ") + std::to_string(int(e)) + " " + what);
+  if (e != RTC_ERROR_NONE)
+    throw Error(ErrorKind::Internal, std::string("Embree error ") + std::to_string(int(e)) + " " + what);
 }
 
 // A distance that dwarfs the rest of the scene, so a finite quad looks like an infinite plane.
 float plane_half_size(const SceneDesc& scene) {
   float extent = length(scene.camera.position) + length(scene.camera.look_at);
   for (const auto& o : scene.objects) {
-    if (const auto* s = std::get_if<SphereObject>(&o.shape)) extent = std::max(extent, length(s->center) + s->radius);
+    if (const auto* s = std::get_if<SphereObject>(&o.shape))
+      extent = std::max(extent, length(s->center) + s->radius);
     if (const auto* p = std::get_if<PlaneObject>(&o.shape)) extent = std::max(extent, length(p->point));
   }
   return 1e4f * std::max(1.0f, extent);
@@ -66,9 +68,12 @@ EmbreeScene::EmbreeScene(const SceneDesc& scene, const MeshLimits& limits) : dev
   const float half_size = plane_half_size(scene);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const auto& shape = scene.objects[i].shape;
-    if (const auto* s = std::get_if<SphereObject>(&shape)) add_sphere(i, *s);
-    else if (const auto* p = std::get_if<PlaneObject>(&shape)) add_plane(i, *p, half_size);
-    else add_mesh(i, std::get<MeshObject>(shape), limits);
+    if (const auto* s = std::get_if<SphereObject>(&shape))
+      add_sphere(i, *s);
+    else if (const auto* p = std::get_if<PlaneObject>(&shape))
+      add_plane(i, *p, half_size);
+    else
+      add_mesh(i, std::get<MeshObject>(shape), limits);
   }
   rtcCommitScene(scene_);
   check_device(device_.get(), "building the scene");
@@ -86,30 +91,35 @@ void EmbreeScene::attach(RTCGeometry geometry, uint32_t id) {
 }
 
 void EmbreeScene::add_sphere(uint32_t id, const SphereObject& s) {
-  if (!finite(s.center) || !(std::isfinite(s.radius) && s.radius > 0)) invalid("sphere: radius must be > 0 and the centre finite");
+  if (!finite(s.center) || !(std::isfinite(s.radius) && s.radius > 0))
+    invalid("sphere: radius must be > 0 and the centre finite");
   objects_[id].kind = Object::Kind::Sphere;
   objects_[id].center = s.center;
   objects_[id].radius = s.radius;
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 1));
   v[0] = s.center.x, v[1] = s.center.y, v[2] = s.center.z, v[3] = s.radius;
   attach(g, id);
 }
 
 void EmbreeScene::add_plane(uint32_t id, const PlaneObject& p, float half_size) {
-  if (!finite(p.point) || !finite(p.normal) || !(length(p.normal) > 0)) invalid("plane: the normal must be non-zero and the point finite");
+  if (!finite(p.point) || !finite(p.normal) || !(length(p.normal) > 0))
+    invalid("plane: the normal must be non-zero and the point finite");
   const Frame frame = Frame::from_normal(normalize(p.normal));
   objects_[id].kind = Object::Kind::Plane;
   objects_[id].center = p.point;
   objects_[id].normal = frame.n;
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_QUAD);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4));
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4));
   const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   for (int c = 0; c < 4; ++c) {
     const Vec3 q = p.point + frame.s * (corners[c][0] * half_size) + frame.t * (corners[c][1] * half_size);
     v[3 * c] = q.x, v[3 * c + 1] = q.y, v[3 * c + 2] = q.z;
   }
-  auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(uint32_t), 1));
+  auto* idx = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(uint32_t), 1));
   idx[0] = 0, idx[1] = 1, idx[2] = 2, idx[3] = 3;
   attach(g, id);
 }
@@ -120,13 +130,14 @@ void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& l
   o.mesh = load_obj_mesh(m, limits);
   triangle_count_ += o.mesh.triangle_count();
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                        o.mesh.positions.size()));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                        3 * sizeof(float), o.mesh.positions.size()));
   for (size_t i = 0; i < o.mesh.positions.size(); ++i) {
-    v[3 * i] = o.mesh.positions[i].x, v[3 * i + 1] = o.mesh.positions[i].y, v[3 * i + 2] = o.mesh.positions[i].z;
+    v[3 * i] = o.mesh.positions[i].x, v[3 * i + 1] = o.mesh.positions[i].y,
+          v[3 * i + 2] = o.mesh.positions[i].z;
   }
-  auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-                                                             o.mesh.triangle_count()));
+  auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                             3 * sizeof(uint32_t), o.mesh.triangle_count()));
   std::copy(o.mesh.indices.begin(), o.mesh.indices.end(), idx);
   attach(g, id);
 }

@@ -14,12 +14,15 @@ float power_heuristic(float a, float b) {
   return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0f;
 }
 
-bool is_black(Rgb c) { return c.x <= 0 && c.y <= 0 && c.z <= 0; }
+bool is_black(Rgb c) {
+  return c.x <= 0 && c.y <= 0 && c.z <= 0;
+}
 
 }  // namespace
 
-Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs, const EnvLight& env,
-                       const std::vector<DirectionalLight>& lights, const IntegratorConfig& config)
+Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs,
+                       const EnvLight& env, const std::vector<DirectionalLight>& lights,
+                       const IntegratorConfig& config)
     : scene_(scene), bsdfs_(bsdfs), env_(env), lights_(lights), config_(config) {}
 
 Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const {
@@ -27,7 +30,8 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
   Ray ray = camera_ray;
   bool delta_chain = true, last_delta = true;
   float bsdf_pdf = 0, eta_scale = 1;
-  const bool lit_by_map = config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
+  const bool lit_by_map =
+      config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
   EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
   for (int depth = 0;; ++depth) {
     ++rays;
@@ -51,7 +55,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     const Point2 u_bsdf = sampler.get_2d();
     const float u_roulette = sampler.get_1d();
 
-    if (bsdf.has_smooth_part()) result += beta * direct(shading, u_light, u_choice.x, rays);
+    if (bsdf.has_non_delta_lobe()) result += beta * direct(shading, u_light, u_choice.x, rays);
 
     const std::optional<BsdfSample> s = bsdf.sample(shading.wo, u_choice.y, u_bsdf);
     if (!s || is_black(s->weight)) break;
@@ -72,15 +76,18 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
   return result;
 }
 
-Rgb Integrator::escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta, float bsdf_pdf) const {
+Rgb Integrator::escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta,
+                        float bsdf_pdf) const {
   if (depth == 0) return config_.env_visible ? env_.radiance(pixel) : Rgb{};
   switch (config_.mode) {
     case LightingMode::Bsdf:
       return env_.radiance(pixel);
     case LightingMode::EnvMap:
-      return last_delta ? env_.radiance(pixel) : env_.radiance(pixel) * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
+      return last_delta ? env_.radiance(pixel)
+                        : env_.radiance(pixel) * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
     case LightingMode::Uniform:
-      return last_delta ? env_.radiance(pixel) : env_.radiance(pixel) * power_heuristic(bsdf_pdf, kUniformSpherePdf);
+      return last_delta ? env_.radiance(pixel)
+                        : env_.radiance(pixel) * power_heuristic(bsdf_pdf, kUniformSpherePdf);
     case LightingMode::MedianCut:
     case LightingMode::MedianCutAll:
       return delta_chain ? env_.radiance(pixel) : Rgb{};
@@ -113,7 +120,8 @@ Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, uint64_
   return {};
 }
 
-Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const {
+Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf,
+                           uint64_t& rays) const {
   if (!(light_pdf > 0) || is_black(light.radiance)) return {};
   const Vec3 wi = s.frame.to_local(light.direction);
   const Rgb f = s.bsdf.eval(s.wo, wi);

@@ -41,10 +41,6 @@ Vec3 rotate_axis(Vec3 v, int axis, float degrees) {
   }
 }
 
-bool finite(Vec3 v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 void check_transform(const MeshObject& m) {
   if (!(std::isfinite(m.scale) && m.scale > 0) || !finite(m.translate) || !finite(m.rotate_deg))
     throw Error(ErrorKind::InvalidArgument, "mesh: scale must be > 0 and the transform finite");

@@ -6,6 +6,9 @@
 
 namespace lp::render {
 
+// Below this alpha (roughness) a specular lobe is a delta, a perfect mirror: GGX in float degenerates there.
+inline constexpr float kDeltaLobeAlpha = 1e-3f;
+
 class Ggx {
  public:
   explicit Ggx(float alpha);
@@ -19,7 +22,8 @@ class Ggx {
   // Height-correlated masking-shadowing for a pair of directions.
   float g(Vec3 wo, Vec3 wi) const { return 1.0f / (1.0f + lambda(wo) + lambda(wi)); }
 
-  // A visible normal for a view direction `wo` (wo.z > 0), and its density D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z.
+  // A visible normal for a view direction `wo` (wo.z > 0), and its density D_wo(m) = G1(wo) max(0, wo.m) D(m)
+  // / wo.z.
   Vec3 sample_visible_normal(Vec3 wo, float u1, float u2) const;
   float visible_normal_pdf(Vec3 wo, Vec3 m) const;
 
@@ -28,6 +32,8 @@ class Ggx {
 };
 
 // Mirror reflection of w about the unit vector m.
-inline Vec3 reflect(Vec3 w, Vec3 m) { return 2.0f * dot(w, m) * m - w; }
+inline Vec3 reflect(Vec3 w, Vec3 m) {
+  return 2.0f * dot(w, m) * m - w;
+}
 
 }  // namespace lp::render

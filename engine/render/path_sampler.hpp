@@ -6,14 +6,11 @@
 // are deterministic whatever the thread schedule.
 #include <cstdint>
 
+#include "engine/core/point2.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/sampling/sobol_2d.hpp"
 
 namespace lp::render {
-
-struct Point2 {
-  float x, y;
-};
 
 namespace detail {
 // reverse_bits(sobol::dimension1(i)) by bytes: the map is linear over XOR, so four table lookups.
@@ -33,7 +30,8 @@ inline constexpr ReversedDimension1 kReversedDimension1{};
 class PathSampler {
  public:
   PathSampler(uint64_t seed, uint64_t pixel, uint32_t sample_index)
-      : pixel_seed_(mix64(seed ^ mix64(pixel ^ 0x5851f42d4c957f2dULL))), reversed_index_(sobol::reverse_bits(sample_index)) {}
+      : pixel_seed_(mix64(seed ^ mix64(pixel ^ 0x5851f42d4c957f2dULL))),
+        reversed_index_(sobol::reverse_bits(sample_index)) {}
 
   // Owen scrambling is reverse(LK(reverse(x))); the reversals of Sobol dimension 0 and of the index
   // cancel, so each coordinate costs one hash and one reversal.
@@ -42,7 +40,8 @@ class PathSampler {
     const uint64_t h2 = mix64(h);
     const uint32_t index = sobol::reverse_bits(sobol::laine_karras_permutation(reversed_index_, uint32_t(h)));
     const uint32_t x = sobol::reverse_bits(sobol::laine_karras_permutation(index, uint32_t(h >> 32)));
-    const uint32_t y = sobol::reverse_bits(sobol::laine_karras_permutation(detail::kReversedDimension1(index), uint32_t(h2)));
+    const uint32_t y = sobol::reverse_bits(
+        sobol::laine_karras_permutation(detail::kReversedDimension1(index), uint32_t(h2)));
     return {sobol::to_unit_float(x), sobol::to_unit_float(y)};
   }
   float get_1d() { return get_2d().x; }

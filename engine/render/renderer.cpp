@@ -1,13 +1,13 @@
 #include "engine/render/renderer.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
 
 #if defined(__SSE__) || defined(__x86_64__)
 #include <xmmintrin.h>
@@ -49,32 +49,38 @@ std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
 class FlushDenormals {
  public:
 #ifdef LP_HAVE_MXCSR
-  FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-  ~FlushDenormals() { _mm_setcsr(saved_); }
+  FlushDenormals() : saved_(_mm_getcsr()) {
+    _mm_setcsr(saved_ | 0x8040u);
+  }
+  ~FlushDenormals() {
+    _mm_setcsr(saved_);
+  }
 
  private:
   unsigned saved_;
 #endif
 };
 
-bool finite(Rgb c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
-
 }  // namespace
 
 struct Renderer::Impl {
-  Impl(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& s, std::shared_ptr<const EnvMap> envmap)
+  Impl(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& s,
+       std::shared_ptr<const EnvMap> envmap)
       : settings(s),
         camera(scene.camera, s.width, s.height),
         bsdfs(make_bsdfs(scene)),
         env(std::move(envmap), lighting),
-        lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights) : std::vector<DirectionalLight>{}),
+        lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights)
+                                          : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),
         integrator(geometry, bsdfs, env, lights, {lighting.mode, s.max_depth, lighting.visible}),
         film(s.width, s.height),
         tiles_x((s.width + kTileSize - 1) / kTileSize),
         tiles_y((s.height + kTileSize - 1) / kTileSize) {}
 
-  static bool uses_lights(LightingMode m) { return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll; }
+  static bool uses_lights(LightingMode m) {
+    return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll;
+  }
 
   void render_tile(int tile, uint32_t first_sample, int spp) {
     const FlushDenormals ftz;
@@ -119,7 +125,9 @@ Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const Rende
 
 Renderer::~Renderer() = default;
 
-int Renderer::tile_count() const { return impl_->tiles_x * impl_->tiles_y; }
+int Renderer::tile_count() const {
+  return impl_->tiles_x * impl_->tiles_y;
+}
 
 bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_pass: spp must be >= 1");
@@ -143,11 +151,17 @@ bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::
   return true;
 }
 
-void Renderer::resume(const Image& mean, int spp) { impl_->film.restore(mean, spp); }
+void Renderer::resume(const Image& mean, int spp) {
+  impl_->film.restore(mean, spp);
+}
 
-int Renderer::spp_done() const { return impl_->film.spp(); }
+int Renderer::spp_done() const {
+  return impl_->film.spp();
+}
 
-Image Renderer::image() const { return impl_->film.mean(); }
+Image Renderer::image() const {
+  return impl_->film.mean();
+}
 
 RenderStats Renderer::stats() const {
   return {impl_->samples.load(std::memory_order_relaxed), impl_->rays.load(std::memory_order_relaxed)};

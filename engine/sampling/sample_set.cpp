@@ -1,8 +1,8 @@
 #include "engine/sampling/sample_set.hpp"
 
-#include <cmath>
-
 #include <tbb/parallel_for.h>
+
+#include <cmath>
 
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
@@ -12,9 +12,12 @@ namespace lp {
 
 const char* strategy_name(SampleStrategy s) {
   switch (s) {
-    case SampleStrategy::Independent: return "independent";
-    case SampleStrategy::Stratified: return "stratified";
-    case SampleStrategy::Sobol: return "sobol";
+    case SampleStrategy::Independent:
+      return "independent";
+    case SampleStrategy::Stratified:
+      return "stratified";
+    case SampleStrategy::Sobol:
+      return "sobol";
   }
   return "?";
 }
@@ -47,7 +50,8 @@ Point2 stratified_point(uint64_t count, uint64_t seed, uint64_t index) {
 
 Point2 sobol_point(uint64_t seed, uint64_t index) {
   const auto i = uint32_t(index);
-  const auto s0 = uint32_t(mix64(seed ^ 0x5851f42d4c957f2dULL)), s1 = uint32_t(mix64(seed ^ 0x14057b7ef767814fULL));
+  const auto s0 = uint32_t(mix64(seed ^ 0x5851f42d4c957f2dULL)),
+             s1 = uint32_t(mix64(seed ^ 0x14057b7ef767814fULL));
   return {sobol::to_unit_float(sobol::owen_scramble(sobol::dimension0(i), s0)),
           sobol::to_unit_float(sobol::owen_scramble(sobol::dimension1(i), s1))};
 }
@@ -61,18 +65,19 @@ EnvSample one_sample(const EnvMapSampler& sampler, const SampleSetSpec& spec, ui
       break;  // batched: generate_independent
     case SampleStrategy::Stratified: {
       const Point2 p = stratified_point(spec.count, spec.seed, index);
-      return sampler.sample(p.u1, p.u2);
+      return sampler.sample(p.x, p.y);
     }
     case SampleStrategy::Sobol: {
       const Point2 p = sobol_point(spec.seed, index);
-      return sampler.sample(p.u1, p.u2);
+      return sampler.sample(p.x, p.y);
     }
   }
   return {};
 }
 
 // Independent samples go through the alias table in blocks, with the bits drawn first.
-void generate_independent(const EnvMapSampler& sampler, uint64_t seed, uint64_t first, std::span<EnvSample> out) {
+void generate_independent(const EnvMapSampler& sampler, uint64_t seed, uint64_t first,
+                          std::span<EnvSample> out) {
   std::vector<EnvMapSampler::AliasBits> bits(out.size());
   for (size_t k = 0; k < out.size(); ++k) {
     Rng rng(seed, first + k);
@@ -91,14 +96,17 @@ void generate_samples(const EnvMapSampler& sampler, const SampleSetSpec& spec, u
   if (spec.strategy == SampleStrategy::Sobol && spec.count > (uint64_t{1} << 32))
     throw Error(ErrorKind::InvalidArgument, "sobol sets hold at most 2^32 samples");
   if (spec.strategy == SampleStrategy::Independent) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-      generate_independent(sampler, spec.seed, first + r.begin(), out.subspan(r.begin(), r.size()));
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+          generate_independent(sampler, spec.seed, first + r.begin(), out.subspan(r.begin(), r.size()));
+        });
     return;
   }
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t k = r.begin(); k != r.end(); ++k) out[k] = one_sample(sampler, spec, first + k);
-  });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t k = r.begin(); k != r.end(); ++k)
+                        out[k] = one_sample(sampler, spec, first + k);
+                    });
 }
 
 }  // namespace lp

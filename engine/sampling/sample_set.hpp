@@ -7,6 +7,7 @@
 #include <span>
 #include <string_view>
 
+#include "engine/core/point2.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 
 namespace lp {
@@ -31,9 +32,6 @@ void generate_samples(const EnvMapSampler& sampler, const SampleSetSpec& spec, u
                       std::span<EnvSample> out);
 
 // The point in [0, 1)^2 that sample `index` feeds the inverse-CDF sampler (stratified and sobol).
-struct Point2 {
-  float u1, u2;
-};
 Point2 stratified_point(uint64_t count, uint64_t seed, uint64_t index);
 Point2 sobol_point(uint64_t seed, uint64_t index);
 

@@ -39,7 +39,7 @@ inline void check_rejection(const api::ApiError& e) {
   const std::string message = e.what();
   if (e.status() >= 400 && e.status() < 500 && message.size() <= kMaxMessageBytes) return;
   std::fprintf(stderr, "bad rejection: status %d, code %s, %zu-byte message: %.300s\n", e.status(),
-               e.code().c_str(), message.size(), message.c_str());
+               std::string(api::code_name(e.code())).c_str(), message.size(), message.c_str());
   std::abort();
 }
 

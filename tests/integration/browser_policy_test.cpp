@@ -66,7 +66,7 @@ TEST(BrowserPolicy, JsonBodiesMustSayTheyAreJson) {
       200);
   // An image body is an upload whatever it is called; it reaches the decoder.
   expect_error(post(s, "/api/v1/envmaps?name=upload", "PF\n1 1\n-1.0\n", "application/octet-stream"), 422,
-               "corrupt_image");
+               "corrupt");
 }
 
 TEST(BrowserPolicy, OnlyThisServersHostNamesAreAnswered) {

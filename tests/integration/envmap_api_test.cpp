@@ -121,8 +121,9 @@ TEST(EnvMapApi, LoadByPathInsideTheDataDirOnly) {
                "path");
   expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/../../x"})", "application/json"),
                400, "path");
+  // A missing file is a bad field of this request (as a missing mesh of a render is), not a missing resource.
   expect_error(c->Post("/api/v1/envmaps", R"({"name":"x","path":"envmaps/none.exr"})", "application/json"),
-               404);
+               400, "field 'path': no file 'envmaps/none.exr'");
   expect_error(c->Post("/api/v1/envmaps", R"({"path":"envmaps/forest.exr"})", "application/json"), 400,
                "name");
   expect_error(

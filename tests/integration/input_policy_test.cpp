@@ -185,7 +185,7 @@ TEST(InputPolicy, RadianceHeaderThatHungTheDecoderIsRefused) {
   for (int i = 0; i < 20; ++i) {  // more than the HTTP workers: a hang in any would show
     const Reply r = upload(server(), "name=hang" + std::to_string(i), bytes);
     ASSERT_EQ(r.status, 422) << r.body;
-    EXPECT_EQ(r.body_json()["error"]["code"], "corrupt_image");
+    EXPECT_EQ(r.body_json()["error"]["code"], "corrupt");
   }
   EXPECT_EQ(test::reply(server().client()->Get("/api/v1/health")).status, 200);
 }

@@ -28,7 +28,7 @@ std::string rejection(const std::string& body) {
   try {
     parse_json_object(body);
   } catch (const ApiError& e) {
-    return std::to_string(e.status()) + " " + e.code() + ": " + e.what();
+    return std::to_string(e.status()) + " " + std::string(code_name(e.code())) + ": " + e.what();
   }
   return "accepted";
 }

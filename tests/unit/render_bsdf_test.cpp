@@ -38,7 +38,7 @@ struct Case {
 };
 
 // Materials with a non-delta part (the ones light sampling and the chi-square test apply to).
-std::vector<Case> smooth_part_cases() {
+std::vector<Case> non_delta_cases() {
   return {
       {"diffuse", DiffuseMaterial{{0.8f, 0.5f, 0.2f}}},
       {"conductor_a0.1", gold(0.1f)},
@@ -92,7 +92,7 @@ class SphereHistogram {
 
 TEST(RenderBsdf, SamplingMatchesPdfChiSquare) {
   constexpr int kSamples = 250000;
-  for (const Case& c : smooth_part_cases()) {
+  for (const Case& c : non_delta_cases()) {
     const auto bsdf = make_bsdf(c.material);
     for (float theta : kThetas) {
       const Vec3 wo = direction(theta, 0.7f);
@@ -103,8 +103,10 @@ TEST(RenderBsdf, SamplingMatchesPdfChiSquare) {
         const Point2 u{rng.uniform_float(), rng.uniform_float()};
         const auto s = bsdf->sample(wo, u_lobe, u);
         // No sample (a microfacet reflection below the horizon) and delta lobes: the mass the pdf lacks.
-        if (!s || s->delta) observed.back() += 1;
-        else observed[SphereHistogram::cell(s->wi)] += 1;
+        if (!s || s->delta)
+          observed.back() += 1;
+        else
+          observed[SphereHistogram::cell(s->wi)] += 1;
       }
       const auto expected = SphereHistogram::expected([&](Vec3 wi) { return bsdf->pdf(wo, wi); }, kSamples);
       const auto r = test::chi_square_test(observed, expected);
@@ -115,7 +117,7 @@ TEST(RenderBsdf, SamplingMatchesPdfChiSquare) {
 }
 
 TEST(RenderBsdf, SampleWeightIsEvalOverPdf) {
-  for (const Case& c : smooth_part_cases()) {
+  for (const Case& c : non_delta_cases()) {
     const auto bsdf = make_bsdf(c.material);
     Rng rng(7, 1);
     for (float theta : kThetas) {
@@ -126,14 +128,15 @@ TEST(RenderBsdf, SampleWeightIsEvalOverPdf) {
         const float pdf = bsdf->pdf(wo, s->wi);
         ASSERT_NEAR(s->pdf, pdf, 2e-3f * pdf) << c.name;
         const Rgb expected = bsdf->eval(wo, s->wi) / pdf;
-        for (int k = 0; k < 3; ++k) ASSERT_NEAR(s->weight[k], expected[k], 2e-3f * expected[k] + 1e-6f) << c.name;
+        for (int k = 0; k < 3; ++k)
+          ASSERT_NEAR(s->weight[k], expected[k], 2e-3f * expected[k] + 1e-6f) << c.name;
       }
     }
   }
 }
 
 TEST(RenderBsdf, Reciprocity) {
-  for (const Case& c : smooth_part_cases()) {
+  for (const Case& c : non_delta_cases()) {
     const auto bsdf = make_bsdf(c.material);
     Rng rng(3, 9);
     for (int i = 0; i < 1000; ++i) {
@@ -191,8 +194,8 @@ TEST(RenderBsdf, AnalyticAlbedos) {
     const auto glass = make_bsdf(DielectricMaterial{1.5f});
     EXPECT_NEAR(albedo(*glass, wo, 0, kN), 1.0, 1e-5);
     // Smooth plastic: F + (1 - F) albedo.
-    EXPECT_NEAR(albedo(*make_bsdf(PlasticMaterial{{0.5f, 0.5f, 0.5f}, 1.5f, 0}), wo, 0, kN), fresnel + (1 - fresnel) * 0.5,
-                5e-3);
+    EXPECT_NEAR(albedo(*make_bsdf(PlasticMaterial{{0.5f, 0.5f, 0.5f}, 1.5f, 0}), wo, 0, kN),
+                fresnel + (1 - fresnel) * 0.5, 5e-3);
     // Smooth gold: the conductor Fresnel reflectance per channel.
     const auto g = gold(0);
     const Rgb f = fresnel_conductor(wo.z, g.eta, g.k);
@@ -219,7 +222,8 @@ TEST(RenderBsdf, DielectricReflectsFresnelFractionAndRefractsBySnell) {
           continue;
         }
         // Snell: eta_i sin_i = eta_t sin_t, and the refracted ray is in the plane of incidence.
-        const double sin_i = std::sqrt(1 - double(wo.z) * wo.z), sin_t = std::sqrt(1 - double(s->wi.z) * s->wi.z);
+        const double sin_i = std::sqrt(1 - double(wo.z) * wo.z),
+                     sin_t = std::sqrt(1 - double(s->wi.z) * s->wi.z);
         ASSERT_NEAR(eta_i * sin_i, eta_t * sin_t, 1e-5);
         ASSERT_NEAR(s->wi.x * wo.y - s->wi.y * wo.x, 0.0, 1e-6);
         ASSERT_NEAR(s->eta, eta_t / eta_i, 1e-6);

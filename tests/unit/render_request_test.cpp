@@ -1,10 +1,11 @@
 // Parsing of POST /api/v1/renders bodies: defaults, every object and material, and 400s naming the field.
+#include "api/render_request.hpp"
+
 #include <gtest/gtest.h>
 
 #include <variant>
 
 #include "api/api_error.hpp"
-#include "api/render_request.hpp"
 #include "engine/fresnel/metals.hpp"
 
 namespace lp::api {
@@ -24,7 +25,7 @@ void expect_field_error(const std::string& body, const std::string& field, const
     ADD_FAILURE() << "accepted; expected an error naming " << field;
   } catch (const ApiError& e) {
     EXPECT_EQ(e.status(), 400);
-    EXPECT_EQ(e.code(), "invalid_field");
+    EXPECT_EQ(e.code(), ErrorCode::InvalidField);
     EXPECT_EQ(std::string(e.what()).rfind("field '" + field + "': ", 0), 0u) << e.what();
   }
 }
@@ -160,31 +161,41 @@ TEST(RenderRequest, LimitsComeFromTheServer) {
 }
 
 TEST(RenderRequest, BadFieldsAreNamedByTheirPath) {
-  const std::string head = R"({"envmap":"e","scene":{"objects":[{"type":"sphere","center":[0,0,0],"radius":1},)";
-  expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":1,"material":{"type":"dielectric","ior":9}}]}})",
-                     "scene.objects[1].material.ior");
-  expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":-1}]}})", "scene.objects[1].radius");
+  const std::string head =
+      R"({"envmap":"e","scene":{"objects":[{"type":"sphere","center":[0,0,0],"radius":1},)";
+  expect_field_error(
+      head + R"({"type":"sphere","center":[0,0,0],"radius":1,"material":{"type":"dielectric","ior":9}}]}})",
+      "scene.objects[1].material.ior");
+  expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":-1}]}})",
+                     "scene.objects[1].radius");
   expect_field_error(head + R"({"type":"sphere","center":[0,0],"radius":1}]}})", "scene.objects[1].center");
-  expect_field_error(head + R"({"type":"sphere","center":[0,"x",0],"radius":1}]}})", "scene.objects[1].center[1]");
+  expect_field_error(head + R"({"type":"sphere","center":[0,"x",0],"radius":1}]}})",
+                     "scene.objects[1].center[1]");
   expect_field_error(head + R"({"type":"sphere","center":[0,0,0]}]}})", "scene.objects[1].radius");
   expect_field_error(head + R"({"type":"cube"}]}})", "scene.objects[1].type");
   expect_field_error(head + R"({"center":[0,0,0],"radius":1}]}})", "scene.objects[1].type");
-  expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":1,"colour":1}]}})", "scene.objects[1].colour");
+  expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":1,"colour":1}]}})",
+                     "scene.objects[1].colour");
   expect_field_error(head + R"(7]}})", "scene.objects[1]");
-  expect_field_error(head + R"({"type":"plane","point":[0,0,0],"normal":[0,0,0]}]}})", "scene.objects[1].normal");
+  expect_field_error(head + R"({"type":"plane","point":[0,0,0],"normal":[0,0,0]}]}})",
+                     "scene.objects[1].normal");
   expect_field_error(head + R"({"type":"mesh"}]}})", "scene.objects[1].path");
   expect_field_error(head + R"({"type":"mesh","path":"m.obj","transform":{"scale":0}}]}})",
                      "scene.objects[1].transform.scale");
   expect_field_error(head + R"({"type":"mesh","path":"m.obj","transform":{"skew":1}}]}})",
                      "scene.objects[1].transform.skew");
   const std::string m = R"({"type":"sphere","center":[0,0,0],"radius":1,"material":)";
-  expect_field_error(head + m + R"({"type":"diffuse","albedo":[1.5,0,0]}}]}})", "scene.objects[1].material.albedo[0]");
+  expect_field_error(head + m + R"({"type":"diffuse","albedo":[1.5,0,0]}}]}})",
+                     "scene.objects[1].material.albedo[0]");
   expect_field_error(head + m + R"({"type":"diffuse","albedo":2}}]}})", "scene.objects[1].material.albedo");
   expect_field_error(head + m + R"({"type":"velvet"}}]}})", "scene.objects[1].material.type");
-  expect_field_error(head + m + R"({"type":"plastic","roughness":2}}]}})", "scene.objects[1].material.roughness");
+  expect_field_error(head + m + R"({"type":"plastic","roughness":2}}]}})",
+                     "scene.objects[1].material.roughness");
   expect_field_error(head + m + R"({"type":"mirror","ior":1.5}}]}})", "scene.objects[1].material.ior");
-  expect_field_error(head + m + R"({"type":"conductor","metal":"unobtainium"}}]}})", "scene.objects[1].material.metal");
-  expect_field_error(head + m + R"({"type":"conductor","metal":"gold","eta":1}}]}})", "scene.objects[1].material.metal");
+  expect_field_error(head + m + R"({"type":"conductor","metal":"unobtainium"}}]}})",
+                     "scene.objects[1].material.metal");
+  expect_field_error(head + m + R"({"type":"conductor","metal":"gold","eta":1}}]}})",
+                     "scene.objects[1].material.metal");
   expect_field_error(head + m + R"({"type":"conductor","eta":1}}]}})", "scene.objects[1].material.k");
   expect_field_error(head + m + R"({"type":"conductor","eta":0,"k":1}}]}})", "scene.objects[1].material.eta");
   expect_field_error(head + m + R"("gold"}]}})", "scene.objects[1].material");
@@ -206,7 +217,8 @@ TEST(RenderRequest, BadTopLevelSceneCameraAndLightingFields) {
   expect_field_error(R"({"envmap":"e","scene":{"lights":[]}})", "scene.lights");
   expect_field_error(R"({"envmap":"e","scene":{"camera":{"position":[0,0,0],"look_at":[0,0,0]}}})",
                      "scene.camera.look_at");
-  expect_field_error(R"({"envmap":"e","scene":{"camera":{"up":[0,1,0]}}})", "scene.camera.up");  // along the view
+  expect_field_error(R"({"envmap":"e","scene":{"camera":{"up":[0,1,0]}}})",
+                     "scene.camera.up");  // along the view
   expect_field_error(R"({"envmap":"e","scene":{"camera":{"fov_deg":180}}})", "scene.camera.fov_deg");
   expect_field_error(R"({"envmap":"e","scene":{"camera":{"zoom":2}}})", "scene.camera.zoom");
   expect_field_error(R"({"envmap":"e","lighting":{"mode":"sun"}})", "lighting.mode");

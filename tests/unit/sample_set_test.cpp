@@ -1,9 +1,10 @@
 // Sample sets: reproducible by seed, stratified for any N, low-discrepancy Sobol nets.
-#include <set>
+#include "engine/sampling/sample_set.hpp"
 
 #include <gtest/gtest.h>
 
-#include "engine/sampling/sample_set.hpp"
+#include <set>
+
 #include "engine/sampling/sobol_2d.hpp"
 #include "support/real_maps.hpp"
 
@@ -38,7 +39,8 @@ TEST(SampleSet, ChunksReproduceTheWholeSet) {
   for (auto strategy : {SampleStrategy::Independent, SampleStrategy::Stratified, SampleStrategy::Sobol}) {
     const auto whole = draw(strategy, 1000, 9);
     const auto part = draw(strategy, 1000, 9, 600, 400);
-    for (size_t i = 0; i < part.size(); ++i) ASSERT_TRUE(same(part[i], whole[600 + i])) << strategy_name(strategy);
+    for (size_t i = 0; i < part.size(); ++i)
+      ASSERT_TRUE(same(part[i], whole[600 + i])) << strategy_name(strategy);
   }
 }
 
@@ -49,14 +51,16 @@ TEST(SampleSet, StratifiedPointsFillEveryStratumOnceForAnyCount) {
     const uint64_t bands = std::max<uint64_t>(1, uint64_t(std::llround(std::sqrt(double(n)))));
     std::set<std::pair<uint64_t, uint64_t>> cells;
     std::vector<uint64_t> band_start(bands + 1, 0);
-    for (uint64_t j = 0; j < bands; ++j) band_start[j + 1] = band_start[j] + n / bands + (j < n % bands ? 1 : 0);
+    for (uint64_t j = 0; j < bands; ++j)
+      band_start[j + 1] = band_start[j] + n / bands + (j < n % bands ? 1 : 0);
     ASSERT_EQ(band_start[bands], n);
     for (uint64_t i = 0; i < n; ++i) {
       const Point2 p = stratified_point(n, 5, i);
-      const auto cell_index = uint64_t(double(p.u2) * double(n));  // which 1/N slice of u2
-      const auto band = uint64_t(std::upper_bound(band_start.begin(), band_start.end(), cell_index) - band_start.begin() - 1);
+      const auto cell_index = uint64_t(double(p.y) * double(n));  // which 1/N slice of u2
+      const auto band = uint64_t(std::upper_bound(band_start.begin(), band_start.end(), cell_index) -
+                                 band_start.begin() - 1);
       const uint64_t in_band = band_start[band + 1] - band_start[band];
-      cells.insert({band, uint64_t(double(p.u1) * double(in_band))});
+      cells.insert({band, uint64_t(double(p.x) * double(in_band))});
     }
     EXPECT_EQ(cells.size(), n) << "N = " << n;
   }
@@ -72,7 +76,8 @@ TEST(SampleSet, SobolPrefixesAreZeroNets) {
     for (uint64_t i = 0; i < n; ++i) pts.push_back(sobol_point(seed, i));
     for (int a = 0; a <= k; ++a) {
       std::set<std::pair<uint32_t, uint32_t>> cells;
-      for (const Point2& p : pts) cells.insert({uint32_t(p.u1 * float(1u << a)), uint32_t(p.u2 * float(1u << (k - a)))});
+      for (const Point2& p : pts)
+        cells.insert({uint32_t(p.x * float(1u << a)), uint32_t(p.y * float(1u << (k - a)))});
       EXPECT_EQ(cells.size(), n) << "seed " << seed << " shape " << a;
     }
   }
