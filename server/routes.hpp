@@ -1,6 +1,5 @@
 #pragma once
-// One function per group of endpoints; server.cpp calls them all. See CONTRIBUTING.md (build in your own
-// build-<name> directory; the lead commits).
+// One function per group of endpoints; server.cpp calls them all. CONTRIBUTING.md says how to add one.
 #include "server/app.hpp"
 #include "server/router.hpp"
 
