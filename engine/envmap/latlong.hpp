@@ -1,5 +1,5 @@
 #pragma once
-// Lat-long conventions (DEVELOPERS.md): z up; pixel (x, y) has centre u = (x + 0.5)/W, v = (y + 0.5)/H,
+// Lat-long conventions (CONTRIBUTING.md): z up; pixel (x, y) has centre u = (x + 0.5)/W, v = (y + 0.5)/H,
 // row 0 at the top; theta = v*pi from +z, phi = u*2*pi;
 // direction = (sin theta cos phi, sin theta sin phi, cos theta).
 #include <algorithm>
