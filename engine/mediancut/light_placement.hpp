@@ -19,8 +19,11 @@ enum class LightPlacement {
   Center,           // the region's geometric centre
 };
 
-const char* light_placement_name(LightPlacement p);  // "centroid", "centroid_squared", "center"
-std::optional<LightPlacement> parse_light_placement(std::string_view s);
+constexpr auto enum_entries(LightPlacement) {
+  return std::to_array<EnumEntry<LightPlacement>>({{LightPlacement::Centroid, "centroid"},
+                                                   {LightPlacement::CentroidSquared, "centroid_squared"},
+                                                   {LightPlacement::Center, "center"}});
+}
 
 using Power = std::array<double, 3>;  // RGB, double so that sums over millions of pixels stay exact
 
