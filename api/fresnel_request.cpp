@@ -48,7 +48,8 @@ ConductorSpec parse_conductor(const Query& q) {
   if (!given(q, "eta")) throw invalid_field("eta", "is required with 'k' (or give 'metal')");
   if (!given(q, "k")) throw invalid_field("k", "is required with 'eta' (0 for a dielectric)");
   const double eta = refractive_index(q, "eta");
-  const double k = number(q, "k", std::nullopt, limits::kFresnelExtinction.min, limits::kFresnelExtinction.max);
+  const double k =
+      number(q, "k", std::nullopt, limits::kFresnelExtinction.min, limits::kFresnelExtinction.max);
   c.eta = {eta, eta, eta};
   c.k = {k, k, k};
   return c;
@@ -59,7 +60,8 @@ ConductorSpec parse_conductor(const Query& q) {
 FresnelRequest parse_fresnel_query(const Query& q) {
   FresnelRequest r;
   r.csv = query_enum(q, "format", TableFormat::JsonDocument) == TableFormat::Csv;
-  r.step = number(q, kFresnelStep.name, kFresnelStep.fallback, kFresnelStep.range.min, kFresnelStep.range.max);
+  r.step =
+      number(q, kFresnelStep.name, kFresnelStep.fallback, kFresnelStep.range.min, kFresnelStep.range.max);
   r.eta_i = refractive_index(q, "eta_i", 1.0);
   const bool conductor = given(q, "metal") || given(q, "eta") || given(q, "k");
   if (conductor) {

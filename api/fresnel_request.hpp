@@ -16,7 +16,8 @@ struct ConductorSpec {
 
 enum class TableFormat { JsonDocument, Csv };
 constexpr auto enum_entries(TableFormat) {
-  return std::to_array<EnumEntry<TableFormat>>({{TableFormat::JsonDocument, "json"}, {TableFormat::Csv, "csv"}});
+  return std::to_array<EnumEntry<TableFormat>>(
+      {{TableFormat::JsonDocument, "json"}, {TableFormat::Csv, "csv"}});
 }
 
 struct FresnelRequest {

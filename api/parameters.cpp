@@ -29,7 +29,10 @@ Location schema(const std::string& name, std::initializer_list<std::string> keys
 
 template <class E>
 Doc enum_doc(Location location, std::optional<E> fallback) {
-  return {std::move(location), enum_names<E>(), {}, {},
+  return {std::move(location),
+          enum_names<E>(),
+          {},
+          {},
           fallback ? std::optional<std::string>(enum_name(*fallback)) : std::nullopt};
 }
 
@@ -53,12 +56,16 @@ Doc field_doc(Location location, const NumberField& f) {
 
 void add_enum_parameters(std::vector<Doc>& d) {
   const std::string samples = "/api/v1/envmaps/{id}/samples", cut = "/api/v1/envmaps/{id}/median-cut";
-  d.push_back(enum_doc(query("/api/v1/envmaps", "post", "invalid"), std::optional(kDefaultInvalidPixelPolicy)));
-  d.push_back(enum_doc({"components", "parameters", "Luminance", "schema"}, std::optional(LuminanceMode::Average)));
-  d.push_back(enum_doc({"components", "parameters", "ImageFormat", "schema"}, std::optional(ImageFormat::Png)));
+  d.push_back(
+      enum_doc(query("/api/v1/envmaps", "post", "invalid"), std::optional(kDefaultInvalidPixelPolicy)));
+  d.push_back(
+      enum_doc({"components", "parameters", "Luminance", "schema"}, std::optional(LuminanceMode::Average)));
+  d.push_back(
+      enum_doc({"components", "parameters", "ImageFormat", "schema"}, std::optional(ImageFormat::Png)));
   d.push_back(enum_doc(body(samples, "strategy"), std::optional(SampleStrategy::Independent)));
   d.push_back(enum_doc(body(samples, "luminance"), std::optional(LuminanceMode::Average)));
-  d.push_back(enum_doc(query(samples + ".png", "get", "strategy"), std::optional(SampleStrategy::Independent)));
+  d.push_back(
+      enum_doc(query(samples + ".png", "get", "strategy"), std::optional(SampleStrategy::Independent)));
   d.push_back(enum_doc(query(samples + ".png", "get", "style"), std::optional(SampleImageStyle::Marks)));
   d.push_back(enum_doc(body(cut, "placement"), std::optional(LightPlacement::Centroid)));
   d.push_back(enum_doc(body(cut, "split"), std::optional(SplitRule::Median)));
@@ -68,8 +75,13 @@ void add_enum_parameters(std::vector<Doc>& d) {
   d.push_back(enum_doc(query(cut + ".png", "get", "style"), std::optional(MedianCutStyle::Regions)));
   d.push_back(enum_doc(query("/api/v1/fresnel", "get", "format"), std::optional(TableFormat::JsonDocument)));
   d.push_back({query("/api/v1/fresnel", "get", "metal"), metal_names(), {}, {}, {}});
-  d.push_back({schema("RenderMaterial", {"oneOf", "type=conductor", "properties", "metal"}), metal_names(), {}, {}, {}});
-  d.push_back(enum_doc(schema("RenderLighting", {"properties", "mode"}), std::optional(render::LightingMode::EnvMap)));
+  d.push_back({schema("RenderMaterial", {"oneOf", "type=conductor", "properties", "metal"}),
+               metal_names(),
+               {},
+               {},
+               {}});
+  d.push_back(enum_doc(schema("RenderLighting", {"properties", "mode"}),
+                       std::optional(render::LightingMode::EnvMap)));
 }
 
 void add_request_ranges(std::vector<Doc>& d) {
@@ -78,9 +90,11 @@ void add_request_ranges(std::vector<Doc>& d) {
   d.push_back(lower_bound_doc(body(samples, "seed"), kSampleSeed.range.min, kSampleSeed.fallback));
   d.push_back(lower_bound_doc(query(samples + ".png", "get", "count"), kSampleImageCount.range.min,
                               kSampleImageCount.fallback));
-  d.push_back(lower_bound_doc(query(samples + ".png", "get", "seed"), kSampleSeed.range.min, kSampleSeed.fallback));
+  d.push_back(
+      lower_bound_doc(query(samples + ".png", "get", "seed"), kSampleSeed.range.min, kSampleSeed.fallback));
   d.push_back(lower_bound_doc(body(cut, "count"), kLightCount.range.min, kLightCount.fallback));
-  d.push_back(lower_bound_doc(query(cut + ".png", "get", "count"), kLightCount.range.min, kLightCount.fallback));
+  d.push_back(
+      lower_bound_doc(query(cut + ".png", "get", "count"), kLightCount.range.min, kLightCount.fallback));
   d.push_back(field_doc({"components", "parameters", "Exposure", "schema"}, kExposure));
   d.push_back(field_doc({"components", "parameters", "Gamma", "schema"}, kGamma));
   const std::string fresnel = "/api/v1/fresnel";
@@ -123,7 +137,8 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(material("dielectric", "ior"), kIor, render::DielectricMaterial{}.ior));
   d.push_back(range_doc(material("plastic", "ior"), kIor, render::PlasticMaterial{}.ior));
   d.push_back(range_doc(material("plastic", "roughness"), kRoughness, render::PlasticMaterial{}.roughness));
-  d.push_back(range_doc(material("conductor", "roughness"), kRoughness, render::ConductorMaterial{}.roughness));
+  d.push_back(
+      range_doc(material("conductor", "roughness"), kRoughness, render::ConductorMaterial{}.roughness));
   Location eta = material("conductor", "eta"), k = material("conductor", "k");
   eta.insert(eta.end(), {"oneOf", "0"});
   k.insert(k.end(), {"oneOf", "0"});
@@ -138,13 +153,32 @@ void add_render_ranges(std::vector<Doc>& d) {
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
-  static const std::vector<const IntParameter*> all = {
-      &kPort,           &kThreads,          &kMaxUploadMb,      &kMaxPixels,         &kMaxSamples,
-      &kMaxEnvmaps,     &kMaxLights,        &kMaxMemoryMb,      &kMaxRenderWidth,    &kMaxRenderHeight,
-      &kMaxRenderSpp,   &kMaxRenderDepth,   &kMaxRenderObjects, &kMaxMeshTriangles,  &kMaxRunningJobs,
-      &kMaxQueuedJobs,  &kMaxFinishedJobs,  &kMaxFinishedMb,    &kMaxEventStreams,   &kMaxConnections,
-      &kMaxConnectionsPerClient, &kHeaderTimeoutS, &kIoTimeoutS, &kKeepAliveTimeoutS, &kShutdownGraceS,
-      &kAccessLogSample};
+  static const std::vector<const IntParameter*> all = {&kPort,
+                                                       &kThreads,
+                                                       &kMaxUploadMb,
+                                                       &kMaxPixels,
+                                                       &kMaxSamples,
+                                                       &kMaxEnvmaps,
+                                                       &kMaxLights,
+                                                       &kMaxMemoryMb,
+                                                       &kMaxRenderWidth,
+                                                       &kMaxRenderHeight,
+                                                       &kMaxRenderSpp,
+                                                       &kMaxRenderDepth,
+                                                       &kMaxRenderObjects,
+                                                       &kMaxMeshTriangles,
+                                                       &kMaxRunningJobs,
+                                                       &kMaxQueuedJobs,
+                                                       &kMaxFinishedJobs,
+                                                       &kMaxFinishedMb,
+                                                       &kMaxEventStreams,
+                                                       &kMaxConnections,
+                                                       &kMaxConnectionsPerClient,
+                                                       &kHeaderTimeoutS,
+                                                       &kIoTimeoutS,
+                                                       &kKeepAliveTimeoutS,
+                                                       &kShutdownGraceS,
+                                                       &kAccessLogSample};
   return all;
 }
 

@@ -26,68 +26,110 @@ struct IntParameter {
 };
 
 // Limits on requests (the request parsers enforce them).
-inline constexpr IntParameter kMaxPixels{"max-pixels", limits::kDefaultMaxImagePixels, {1, int64_t{1} << 34},
-                                         "largest map in pixels", Owner::Engine, nullptr, 413};
-inline constexpr IntParameter kMaxSamples{"max-samples", 10'000'000, {1, int64_t{1} << 32},
-                                          "most samples per request", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxLights{"max-lights", 65536, {1, int64_t{1} << 24},
-                                         "most median-cut lights per request", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderWidth{"max-render-width", 4096, {1, 65536}, "widest render in pixels",
-                                              Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderHeight{"max-render-height", 4096, {1, 65536}, "tallest render in pixels",
-                                               Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderSpp{"max-render-spp", 65536, {1, 1 << 24},
-                                            "most samples per pixel of a render", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderDepth{"max-render-depth", 64, limits::kMaxDepth,
-                                              "largest max_depth (path bounces) of a render", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderObjects{"max-render-objects", 256, {0, 1 << 20},
-                                                "most objects in a render's scene", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxMeshTriangles{"max-mesh-triangles", limits::kDefaultMaxMeshTriangles,
-                                                {1, int64_t{1} << 32}, "most triangles in one mesh of a render",
-                                                Owner::Engine, nullptr, 400};
+inline constexpr IntParameter kMaxPixels{"max-pixels",
+                                         limits::kDefaultMaxImagePixels,
+                                         {1, int64_t{1} << 34},
+                                         "largest map in pixels",
+                                         Owner::Engine,
+                                         nullptr,
+                                         413};
+inline constexpr IntParameter kMaxSamples{
+    "max-samples", 10'000'000, {1, int64_t{1} << 32}, "most samples per request", Owner::Api, nullptr, 400};
+inline constexpr IntParameter kMaxLights{
+    "max-lights", 65536, {1, int64_t{1} << 24}, "most median-cut lights per request", Owner::Api,
+    nullptr,      400};
+inline constexpr IntParameter kMaxRenderWidth{
+    "max-render-width", 4096, {1, 65536}, "widest render in pixels", Owner::Api, nullptr, 400};
+inline constexpr IntParameter kMaxRenderHeight{
+    "max-render-height", 4096, {1, 65536}, "tallest render in pixels", Owner::Api, nullptr, 400};
+inline constexpr IntParameter kMaxRenderSpp{
+    "max-render-spp", 65536, {1, 1 << 24}, "most samples per pixel of a render", Owner::Api, nullptr, 400};
+inline constexpr IntParameter kMaxRenderDepth{"max-render-depth",
+                                              64,
+                                              limits::kMaxDepth,
+                                              "largest max_depth (path bounces) of a render",
+                                              Owner::Api,
+                                              nullptr,
+                                              400};
+inline constexpr IntParameter kMaxRenderObjects{
+    "max-render-objects", 256, {0, 1 << 20}, "most objects in a render's scene", Owner::Api, nullptr, 400};
+inline constexpr IntParameter kMaxMeshTriangles{"max-mesh-triangles",
+                                                limits::kDefaultMaxMeshTriangles,
+                                                {1, int64_t{1} << 32},
+                                                "most triangles in one mesh of a render",
+                                                Owner::Engine,
+                                                nullptr,
+                                                400};
 
 // Resources of the server.
-inline constexpr IntParameter kPort{"port", 8080, {0, 65535}, "port (0 picks a free port, printed on start)",
-                                    Owner::Server};
-inline constexpr IntParameter kThreads{"threads", 0, {1, 1024}, "worker threads for computation", Owner::Server,
-                                       "all cores"};
-inline constexpr IntParameter kMaxUploadMb{"max-upload-mb", 512, {1, 1 << 20}, "largest request body in MiB",
-                                           Owner::Server, nullptr, 413};
-inline constexpr IntParameter kMaxEnvmaps{"max-envmaps", 64, {1, 100000}, "most maps held at once", Owner::Server};
+inline constexpr IntParameter kPort{
+    "port", 8080, {0, 65535}, "port (0 picks a free port, printed on start)", Owner::Server};
+inline constexpr IntParameter kThreads{"threads",     0,          {1, 1024}, "worker threads for computation",
+                                       Owner::Server, "all cores"};
+inline constexpr IntParameter kMaxUploadMb{
+    "max-upload-mb", 512, {1, 1 << 20}, "largest request body in MiB", Owner::Server, nullptr, 413};
+inline constexpr IntParameter kMaxEnvmaps{
+    "max-envmaps", 64, {1, 100000}, "most maps held at once", Owner::Server};
 inline constexpr IntParameter kMaxMemoryMb{
-    "max-memory-mb", 0, {1, int64_t{1} << 30},
+    "max-memory-mb",
+    0,
+    {1, int64_t{1} << 30},
     "MiB for maps, their sampling tables and caches, images in flight and render results; past it, caches "
     "are evicted, then requests get 503 or 507",
-    Owner::Server, "half the machine's memory, or of its cgroup limit"};
-inline constexpr IntParameter kMaxRunningJobs{"max-running-jobs", 2, {1, 256},
-                                              "renders running at once, each in its own thread arena", Owner::Server};
-inline constexpr IntParameter kMaxQueuedJobs{"max-queued-jobs", 16, {0, 1 << 20},
-                                             "renders waiting to run; a full queue answers 503", Owner::Server};
-inline constexpr IntParameter kMaxFinishedJobs{"max-finished-jobs", 64, {1, 1 << 20},
-                                               "finished renders kept with their images, oldest dropped", Owner::Server};
-inline constexpr IntParameter kMaxFinishedMb{"max-finished-mb", 1024, {1, 1 << 24},
-                                             "MiB of images kept by finished renders, oldest dropped", Owner::Server};
-inline constexpr IntParameter kMaxEventStreams{"max-event-streams", 8, {0, 4096},
-                                               "concurrent render event streams", Owner::Server};
-inline constexpr IntParameter kMaxConnections{"max-connections", 1024, {1, 1 << 20},
-                                              "open connections at once; more are refused with 503", Owner::Server};
-inline constexpr IntParameter kMaxConnectionsPerClient{
-    "max-connections-per-client", 512, {1, 1 << 20},
-    "open connections from one client address; more are refused with 503", Owner::Server};
-inline constexpr IntParameter kHeaderTimeoutS{"header-timeout-s", 10, {1, 3600},
-                                              "seconds for a request line and its headers to arrive; then 408",
+    Owner::Server,
+    "half the machine's memory, or of its cgroup limit"};
+inline constexpr IntParameter kMaxRunningJobs{
+    "max-running-jobs", 2, {1, 256}, "renders running at once, each in its own thread arena", Owner::Server};
+inline constexpr IntParameter kMaxQueuedJobs{
+    "max-queued-jobs", 16, {0, 1 << 20}, "renders waiting to run; a full queue answers 503", Owner::Server};
+inline constexpr IntParameter kMaxFinishedJobs{"max-finished-jobs",
+                                               64,
+                                               {1, 1 << 20},
+                                               "finished renders kept with their images, oldest dropped",
+                                               Owner::Server};
+inline constexpr IntParameter kMaxFinishedMb{"max-finished-mb",
+                                             1024,
+                                             {1, 1 << 24},
+                                             "MiB of images kept by finished renders, oldest dropped",
+                                             Owner::Server};
+inline constexpr IntParameter kMaxEventStreams{
+    "max-event-streams", 8, {0, 4096}, "concurrent render event streams", Owner::Server};
+inline constexpr IntParameter kMaxConnections{"max-connections",
+                                              1024,
+                                              {1, 1 << 20},
+                                              "open connections at once; more are refused with 503",
                                               Owner::Server};
-inline constexpr IntParameter kIoTimeoutS{"io-timeout-s", 30, {1, 3600},
-                                          "seconds a body read or a response write may wait; then the connection "
-                                          "closes",
-                                          Owner::Server};
-inline constexpr IntParameter kKeepAliveTimeoutS{"keep-alive-timeout-s", 5, {1, 3600},
-                                                 "seconds an idle keep-alive connection stays open", Owner::Server};
+inline constexpr IntParameter kMaxConnectionsPerClient{
+    "max-connections-per-client",
+    512,
+    {1, 1 << 20},
+    "open connections from one client address; more are refused with 503",
+    Owner::Server};
+inline constexpr IntParameter kHeaderTimeoutS{
+    "header-timeout-s",
+    10,
+    {1, 3600},
+    "seconds for a request line and its headers to arrive; then 408",
+    Owner::Server};
+inline constexpr IntParameter kIoTimeoutS{
+    "io-timeout-s",
+    30,
+    {1, 3600},
+    "seconds a body read or a response write may wait; then the connection "
+    "closes",
+    Owner::Server};
+inline constexpr IntParameter kKeepAliveTimeoutS{
+    "keep-alive-timeout-s", 5, {1, 3600}, "seconds an idle keep-alive connection stays open", Owner::Server};
 inline constexpr IntParameter kShutdownGraceS{
-    "shutdown-grace-s", 10, {0, 3600}, "on SIGTERM/SIGINT, seconds running renders get to finish their pass",
+    "shutdown-grace-s",
+    10,
+    {0, 3600},
+    "on SIGTERM/SIGINT, seconds running renders get to finish their pass",
     Owner::Server};
 inline constexpr IntParameter kAccessLogSample{
-    "access-log-sample", 1, {0, int64_t{1} << 40},
+    "access-log-sample",
+    1,
+    {0, int64_t{1} << 40},
     "access log: one line per N requests at info level, 0 for none; a 5xx answer is always logged, at error "
     "level",
     Owner::Server};

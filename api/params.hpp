@@ -52,14 +52,13 @@ std::string join(const std::vector<std::string>& items, const std::string& sep);
 
 // An enum parameter: its allowed names and its parse come from the enum's table (enum_table.hpp).
 template <class E>
-  requires std::is_enum_v<E>
-E query_enum(const Query& q, const std::string& name, E fallback) {
+requires std::is_enum_v<E> E query_enum(const Query& q, const std::string& name, E fallback) {
   return *parse_enum<E>(query_enum(q, name, enum_name(fallback), enum_names<E>()));
 }
 
 template <class E>
-  requires std::is_enum_v<E>
-E json_enum(const Json& body, const std::string& name, E fallback, const std::string& prefix = "") {
+requires std::is_enum_v<E> E json_enum(const Json& body, const std::string& name, E fallback,
+                                       const std::string& prefix = "") {
   return *parse_enum<E>(json_enum(body, name, enum_name(fallback), enum_names<E>(), prefix));
 }
 

@@ -19,7 +19,9 @@ namespace {
 using namespace lp::render;
 
 // Values are read as finite numbers here; their ranges are the engine's (validate() in scene_desc.hpp).
-std::string field_name(const std::string& prefix, const std::string& name) { return field_path(prefix, name); }
+std::string field_name(const std::string& prefix, const std::string& name) {
+  return field_path(prefix, name);
+}
 
 const Json* member(const Json& parent, const std::string& name) {
   auto it = parent.find(name);

@@ -23,5 +23,4 @@ struct RenderRequest {
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits);
 
-
 }  // namespace lp::api

@@ -20,8 +20,10 @@ SampleRequest parse_sample_request(const Json& body, const RequestLimits& limits
   const auto& c = kSampleCount;
   const auto& s = kSampleSeed;
   SampleRequest r;
-  r.spec.count = uint64_t(json_int(body, c.name, 0, int64_t(c.range.min), count(limits.max_samples, c, limits)));
-  r.spec.seed = uint64_t(json_int(body, s.name, int64_t(*s.fallback), int64_t(s.range.min), int64_t(s.range.max)));
+  r.spec.count =
+      uint64_t(json_int(body, c.name, 0, int64_t(c.range.min), count(limits.max_samples, c, limits)));
+  r.spec.seed =
+      uint64_t(json_int(body, s.name, int64_t(*s.fallback), int64_t(s.range.min), int64_t(s.range.max)));
   r.spec.strategy = json_enum(body, "strategy", SampleStrategy::Independent);
   r.luminance = json_enum(body, "luminance", LuminanceMode::Average);
   return r;
@@ -31,8 +33,8 @@ SampleImageRequest parse_sample_image_query(const Query& q, const RequestLimits&
   const auto& c = kSampleImageCount;
   const auto& s = kSampleSeed;
   SampleImageRequest r;
-  r.samples.spec.count = uint64_t(query_int(q, c.name, int64_t(*c.fallback), int64_t(c.range.min),
-                                            count(limits.max_samples, c, limits)));
+  r.samples.spec.count = uint64_t(
+      query_int(q, c.name, int64_t(*c.fallback), int64_t(c.range.min), count(limits.max_samples, c, limits)));
   r.samples.spec.seed =
       uint64_t(query_int(q, s.name, int64_t(*s.fallback), int64_t(s.range.min), int64_t(s.range.max)));
   r.samples.spec.strategy = query_enum(q, "strategy", SampleStrategy::Independent);

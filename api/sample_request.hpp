@@ -19,7 +19,8 @@ SampleRequest parse_sample_request(const Json& body, const RequestLimits& limits
 
 enum class SampleImageStyle { Marks, Windows };
 constexpr auto enum_entries(SampleImageStyle) {
-  return std::to_array<EnumEntry<SampleImageStyle>>({{SampleImageStyle::Marks, "marks"}, {SampleImageStyle::Windows, "windows"}});
+  return std::to_array<EnumEntry<SampleImageStyle>>(
+      {{SampleImageStyle::Marks, "marks"}, {SampleImageStyle::Windows, "windows"}});
 }
 
 struct SampleImageRequest {

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <iostream>
 #include <functional>
+#include <iostream>
 #include <stdexcept>
 #include <type_traits>
 
@@ -43,7 +43,9 @@ struct IntFlag {
 
 template <auto Member>
 IntFlag option(const api::IntParameter& p) {
-  return {&p, [](Options& o, int64_t v) { o.*Member = static_cast<std::remove_reference_t<decltype(o.*Member)>>(v); }};
+  return {&p, [](Options& o, int64_t v) {
+            o.*Member = static_cast<std::remove_reference_t<decltype(o.*Member)>>(v);
+          }};
 }
 
 template <auto Member>

@@ -25,20 +25,21 @@ struct Options {
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
   std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)
-  int threads = int(api::kThreads.fallback);              // 0 = all cores
+  int threads = int(api::kThreads.fallback);               // 0 = all cores
   int64_t max_upload_mb = api::kMaxUploadMb.fallback;
   int64_t max_envmaps = api::kMaxEnvmaps.fallback;
-  api::RequestLimits limits;  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles
+  api::RequestLimits
+      limits;  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
   int64_t max_memory_mb = default_max_memory_mb();
-  spdlog::level::level_enum log_level = spdlog::level::info;  // least severe messages written
+  spdlog::level::level_enum log_level = spdlog::level::info;   // least severe messages written
   int64_t access_log_sample = api::kAccessLogSample.fallback;  // log 1 request in N (0: none; 5xx always)
   bool list_routes = false;  // print "METHOD PATH" per registered route and exit
   // Render jobs (POST /api/v1/renders).
   int max_running_jobs = int(api::kMaxRunningJobs.fallback);
   int max_queued_jobs = int(api::kMaxQueuedJobs.fallback);
   int max_finished_jobs = int(api::kMaxFinishedJobs.fallback);
-  int64_t max_finished_mb = api::kMaxFinishedMb.fallback;  // images kept by finished jobs
+  int64_t max_finished_mb = api::kMaxFinishedMb.fallback;       // images kept by finished jobs
   int max_event_streams = int(api::kMaxEventStreams.fallback);  // concurrent GET .../events streams
   // Connections (server/http_transport.hpp).
   int max_connections = int(api::kMaxConnections.fallback);

@@ -19,7 +19,8 @@ void median_cut(App& app, const httplib::Request& req, httplib::Response& res) {
   api::check_count_fits(params, entry->map->image().pixel_count());
   bool cached = false;
   const auto result = median_cut_cached(*entry->map, params, &cached);
-  const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   res.set_content(api::median_cut_json(*result, elapsed, cached), "application/json");
 }
 

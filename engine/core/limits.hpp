@@ -1,10 +1,10 @@
 #pragma once
 // The ranges and limits the engine owns. Engine parameter structs validate against them; the API's
 // parsers, messages, server flags and api/openapi.yaml take them from here.
+#include <fmt/format.h>
+
 #include <cstdint>
 #include <string>
-
-#include <fmt/format.h>
 
 namespace lp {
 

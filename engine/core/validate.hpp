@@ -25,7 +25,8 @@ inline void require(bool ok, const std::string& field, const std::string& proble
 
 template <class T, class V>
 void require_in(const std::string& field, V value, const Range<T>& range) {
-  if (!range.contains(T(value))) invalid_parameter(field, fmt::format("{}, got {}", range_message(range), value));
+  if (!range.contains(T(value)))
+    invalid_parameter(field, fmt::format("{}, got {}", range_message(range), value));
 }
 
 // Each of the three components in `range`; the field is named per component ("albedo[1]"), or as a

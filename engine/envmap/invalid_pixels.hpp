@@ -17,7 +17,8 @@ namespace lp {
 // clamp: negative channel values become 0 and invalid pixels black; reject: the first bad pixel is an error.
 enum class InvalidPixelPolicy { Clamp, Reject };
 constexpr auto enum_entries(InvalidPixelPolicy) {
-  return std::to_array<EnumEntry<InvalidPixelPolicy>>({{InvalidPixelPolicy::Clamp, "clamp"}, {InvalidPixelPolicy::Reject, "reject"}});
+  return std::to_array<EnumEntry<InvalidPixelPolicy>>(
+      {{InvalidPixelPolicy::Clamp, "clamp"}, {InvalidPixelPolicy::Reject, "reject"}});
 }
 inline constexpr InvalidPixelPolicy kDefaultInvalidPixelPolicy = InvalidPixelPolicy::Clamp;
 

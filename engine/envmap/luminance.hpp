@@ -13,7 +13,8 @@ inline float luminance(Rgb c, LuminanceMode mode) {
 }
 
 constexpr auto enum_entries(LuminanceMode) {
-  return std::to_array<EnumEntry<LuminanceMode>>({{LuminanceMode::Average, "average"}, {LuminanceMode::Rec709, "rec709"}});
+  return std::to_array<EnumEntry<LuminanceMode>>(
+      {{LuminanceMode::Average, "average"}, {LuminanceMode::Rec709, "rec709"}});
 }
 
 }  // namespace lp

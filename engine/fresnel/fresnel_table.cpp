@@ -4,10 +4,10 @@
 #include <cstdint>
 
 #include "engine/core/error.hpp"
+#include "engine/core/validate.hpp"
 #include "engine/fresnel/angles.hpp"
 #include "engine/fresnel/conductor.hpp"
 #include "engine/fresnel/dielectric.hpp"
-#include "engine/core/validate.hpp"
 #include "engine/fresnel/schlick.hpp"
 
 namespace lp {

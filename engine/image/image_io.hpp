@@ -19,8 +19,10 @@ namespace lp {
 enum class ImageFormat { Exr, Pfm, Hdr, Png };
 
 constexpr auto enum_entries(ImageFormat) {
-  return std::to_array<EnumEntry<ImageFormat>>(
-      {{ImageFormat::Png, "png"}, {ImageFormat::Exr, "exr"}, {ImageFormat::Pfm, "pfm"}, {ImageFormat::Hdr, "hdr"}});
+  return std::to_array<EnumEntry<ImageFormat>>({{ImageFormat::Png, "png"},
+                                                {ImageFormat::Exr, "exr"},
+                                                {ImageFormat::Pfm, "pfm"},
+                                                {ImageFormat::Hdr, "hdr"}});
 }
 const char* format_mime_type(ImageFormat f);
 
@@ -56,7 +58,8 @@ struct ToneMap {
 };
 
 enum class ExrCompression { Zip, None };  // None: several times faster to write, for noisy images
-std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression = ExrCompression::Zip);  // float RGB
+std::vector<uint8_t> write_exr(const Image& image,
+                               ExrCompression compression = ExrCompression::Zip);  // float RGB
 std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
 std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
 std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB

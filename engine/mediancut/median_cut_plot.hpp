@@ -20,7 +20,8 @@ namespace lp {
 enum class MedianCutStyle { Regions, Lights };
 
 constexpr auto enum_entries(MedianCutStyle) {
-  return std::to_array<EnumEntry<MedianCutStyle>>({{MedianCutStyle::Regions, "regions"}, {MedianCutStyle::Lights, "lights"}});
+  return std::to_array<EnumEntry<MedianCutStyle>>(
+      {{MedianCutStyle::Regions, "regions"}, {MedianCutStyle::Lights, "lights"}});
 }
 
 // Upper bound of the memory either picture takes for a width x height map: its 8-bit pixels and the

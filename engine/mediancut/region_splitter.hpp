@@ -16,11 +16,13 @@ namespace lp {
 
 enum class SplitRule { Median, Variance };
 constexpr auto enum_entries(SplitRule) {
-  return std::to_array<EnumEntry<SplitRule>>({{SplitRule::Median, "median"}, {SplitRule::Variance, "variance"}});
+  return std::to_array<EnumEntry<SplitRule>>(
+      {{SplitRule::Median, "median"}, {SplitRule::Variance, "variance"}});
 }
 
 struct Cut {
-  bool vertical = true;  // true: at column `position` (children [x0, p) and [p, x1)); false: at row `position`
+  bool vertical =
+      true;  // true: at column `position` (children [x0, p) and [p, x1)); false: at row `position`
   int position = 0;
 };
 

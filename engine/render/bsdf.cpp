@@ -34,6 +34,8 @@ struct Factory {
 
 }  // namespace
 
-std::unique_ptr<Bsdf> make_bsdf(const Material& material) { return std::visit(Factory{}, material); }
+std::unique_ptr<Bsdf> make_bsdf(const Material& material) {
+  return std::visit(Factory{}, material);
+}
 
 }  // namespace lp::render

@@ -6,12 +6,11 @@
 #include "engine/core/error.hpp"
 
 namespace lp::render {
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 PerspectiveCamera::PerspectiveCamera(const Camera& c, int width, int height) {
-  if (width < 1 || height < 1) throw Error(ErrorKind::InvalidArgument, "camera: the image must have at least one pixel");
+  if (width < 1 || height < 1)
+    throw Error(ErrorKind::InvalidArgument, "camera: the image must have at least one pixel");
   c.validate("camera");
   forward_ = normalize(c.look_at - c.position);
   const Vec3 side = cross(forward_, normalize(c.up));

@@ -36,10 +36,11 @@ struct PlasticMaterial {
 struct ConductorMaterial {
   Rgb eta{0.2f, 0.4f, 1.4f};  // filled from a preset (e.g. "gold") by the parser, or given
   Rgb k{3.6f, 2.4f, 1.8f};
-  float roughness = 0.0f;     // GGX alpha; 0 = smooth
+  float roughness = 0.0f;  // GGX alpha; 0 = smooth
   void validate(const std::string& prefix) const;
 };
-using Material = std::variant<DiffuseMaterial, MirrorMaterial, DielectricMaterial, PlasticMaterial, ConductorMaterial>;
+using Material =
+    std::variant<DiffuseMaterial, MirrorMaterial, DielectricMaterial, PlasticMaterial, ConductorMaterial>;
 
 struct SphereObject {
   Vec3 center;
@@ -55,7 +56,7 @@ struct MeshObject {
   std::filesystem::path path;  // already resolved and checked to be inside the data dir
   Vec3 translate;
   float scale = 1;
-  Vec3 rotate_deg;             // rotations about x, then y, then z
+  Vec3 rotate_deg;  // rotations about x, then y, then z
   void validate(const std::string& prefix) const;
 };
 struct SceneObject {
@@ -89,10 +90,10 @@ constexpr auto enum_entries(LightingMode) {
 
 struct Lighting {
   LightingMode mode = LightingMode::EnvMap;
-  int lights = 64;            // median-cut light count
-  float rotation_deg = 0;     // about z
+  int lights = 64;         // median-cut light count
+  float rotation_deg = 0;  // about z
   float intensity = 1;
-  bool visible = true;        // the camera sees the map
+  bool visible = true;  // the camera sees the map
   void validate(const std::string& prefix) const;
 };
 
@@ -105,7 +106,7 @@ struct MeshLimits {
 struct RenderSettings {
   int width = 256, height = 256;
   int spp = 64;
-  int max_depth = 8;      // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
+  int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
   MeshLimits mesh_limits;
   void validate(const std::string& prefix) const;

@@ -61,7 +61,8 @@ void Camera::validate(const std::string& prefix) const {
   require_in(field_path(prefix, "up"), up, kCoordinate);
   require_in(field_path(prefix, "fov_deg"), fov_deg, kFovDeg);
   const Vec3 view = look_at - position;
-  require(length(view) > 1e-6f, field_path(prefix, "look_at"), "must differ from " + field_path(prefix, "position"));
+  require(length(view) > 1e-6f, field_path(prefix, "look_at"),
+          "must differ from " + field_path(prefix, "position"));
   require(length(up) > 1e-9f, field_path(prefix, "up"), "must not be the zero vector");
   require(length(cross(normalize(view), normalize(up))) >= 1e-4f, field_path(prefix, "up"),
           "must not be parallel to the viewing direction (look_at - position)");

@@ -1,8 +1,9 @@
 // Parsing of median-cut requests and the JSON text of a result.
+#include "api/median_cut_request.hpp"
+
 #include <gtest/gtest.h>
 
 #include "api/api_error.hpp"
-#include "api/median_cut_request.hpp"
 #include "api/median_cut_schema.hpp"
 
 namespace lp::api {
@@ -33,7 +34,8 @@ TEST(MedianCutRequest, EmptyBodyMeansDefaults) {
     EXPECT_EQ(p.luminance, LuminanceMode::Average);
   }
   const MedianCutParams p = parse_median_cut_request(
-      R"({"count":100,"placement":"centroid_squared","split":"variance","luminance":"rec709"})", RequestLimits{});
+      R"({"count":100,"placement":"centroid_squared","split":"variance","luminance":"rec709"})",
+      RequestLimits{});
   EXPECT_EQ(p.count, 100);
   EXPECT_EQ(p.placement, LightPlacement::CentroidSquared);
   EXPECT_EQ(p.split, SplitRule::Variance);
@@ -41,18 +43,26 @@ TEST(MedianCutRequest, EmptyBodyMeansDefaults) {
 }
 
 TEST(MedianCutRequest, BadFieldsAreNamed) {
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":0})", lights(10)); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":11})", lights(10)); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":1.5})", lights(10)); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"placement":"x"})", lights(10)); }).find("'placement'"),
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":0})", lights(10)); }).find("'count'"),
             std::string::npos);
-  EXPECT_NE(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":9})", lights(10)), 8); }).find("'count'"),
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":11})", lights(10)); }).find("'count'"),
             std::string::npos);
-  EXPECT_EQ(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":8})", lights(10)), 8); }), "accepted");
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":1.5})", lights(10)); }).find("'count'"),
+            std::string::npos);
+  EXPECT_NE(
+      field_of([] { parse_median_cut_request(R"({"placement":"x"})", lights(10)); }).find("'placement'"),
+      std::string::npos);
+  EXPECT_NE(field_of([] {
+              check_count_fits(parse_median_cut_request(R"({"count":9})", lights(10)), 8);
+            }).find("'count'"),
+            std::string::npos);
+  EXPECT_EQ(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":8})", lights(10)), 8); }),
+            "accepted");
 }
 
 TEST(MedianCutRequest, ImageQuery) {
-  const Query q = {{"count", "16"}, {"style", "lights"}, {"split", "variance"}, {"exposure", "-2"}, {"gamma", "2.2"}};
+  const Query q = {
+      {"count", "16"}, {"style", "lights"}, {"split", "variance"}, {"exposure", "-2"}, {"gamma", "2.2"}};
   const MedianCutImageRequest r = parse_median_cut_image_query(q, RequestLimits{});
   EXPECT_EQ(r.params.count, 16);
   EXPECT_EQ(r.params.split, SplitRule::Variance);
@@ -60,7 +70,9 @@ TEST(MedianCutRequest, ImageQuery) {
   EXPECT_EQ(r.tone.exposure, -2.0f);
   EXPECT_EQ(r.tone.gamma, 2.2f);
   EXPECT_EQ(parse_median_cut_image_query({}, RequestLimits{}).style, MedianCutStyle::Regions);
-  EXPECT_NE(field_of([] { parse_median_cut_image_query({{"style", "dots"}}, lights(10)); }).find("'style'"),
+  EXPECT_NE(field_of([] {
+              parse_median_cut_image_query({{"style", "dots"}}, lights(10));
+            }).find("'style'"),
             std::string::npos);
 }
 

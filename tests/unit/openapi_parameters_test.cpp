@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
-#include <cstdio>
 #include <string>
 
 #include "api/openapi.hpp"
@@ -19,26 +18,30 @@ const YAML::Node& document() {
 
 // Follows "$ref" and an allOf of one "$ref" to the schema they name. (Nodes are moved with reset():
 // assigning a YAML::Node writes into the node it refers to.)
-YAML::Node child(const YAML::Node& node, const std::string& key) { return node[key]; }  // const: adds nothing
+YAML::Node child(const YAML::Node& node, const std::string& key) {
+  return node[key];
+}  // const: adds nothing
 
 YAML::Node follow(YAML::Node node) {
-  for (;;) {
-    if (node["$ref"]) {
-      const std::string ref = node["$ref"].as<std::string>();
+  while (node.IsMap()) {
+    const YAML::Node ref = child(node, "$ref"), all_of = child(node, "allOf");
+    if (ref) {
+      const std::string text = ref.as<std::string>();
       YAML::Node target = document();
       size_t start = 2;  // after "#/"
-      while (start <= ref.size()) {
-        const size_t end = std::min(ref.find('/', start), ref.size());
-        target.reset(child(target, ref.substr(start, end - start)));
+      while (start <= text.size()) {
+        const size_t end = std::min(text.find('/', start), text.size());
+        target.reset(child(target, text.substr(start, end - start)));
         start = end + 1;
       }
       node.reset(target);
-    } else if (node["allOf"] && node["allOf"].size() == 1) {
-      node.reset(node["allOf"][0]);
+    } else if (all_of && all_of.size() == 1) {
+      node.reset(all_of[0]);
     } else {
-      return node;
+      break;
     }
   }
+  return node;
 }
 
 // In a list: "name=X" is the parameter named X, "type=X" the schema whose type property is the enum [X],
@@ -79,7 +82,6 @@ TEST(OpenApiParameters, EveryDeclaredEnumAndRangeIsTheDocumentedOne) {
   ASSERT_GT(parameters.size(), 40u);
   for (const DocumentedParameter& p : parameters) {
     SCOPED_TRACE(where(p.location));
-    std::fprintf(stderr, "%s\n", where(p.location).c_str());
     const YAML::Node schema = locate(p.location);
     ASSERT_TRUE(schema) << "not in api/openapi.yaml";
     if (!p.names.empty()) {
