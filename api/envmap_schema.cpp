@@ -46,7 +46,7 @@ Json distribution_json(const EnvMap& map, LuminanceMode mode, bool sin_weight) {
     cdf.push_back(y + 1 == h && total > 0 ? 1.0 : run);
   }
   return {{"height", h},
-          {"luminance", luminance_mode_name(mode)},
+          {"luminance", enum_name(mode)},
           {"sin_weight", sin_weight},
           {"row_luminance", row_luminance},
           {"marginal_pdf", pdf},

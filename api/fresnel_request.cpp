@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "api/api_error.hpp"
+#include "api/parameters.hpp"
 
 namespace lp::api {
 namespace {
@@ -24,13 +25,13 @@ double number(const Query& q, const std::string& name, std::optional<double> fal
   }
   if (min > 0 && *v <= 0) throw invalid_field(name, fmt::format("{} must be > 0", *v));
   if (*v < min || *v > max)
-    throw invalid_field(name, fmt::format("{} is out of range [{}, {}]", *v, min, max));
+    throw invalid_field(name, fmt::format("{}, got {}", range_message(Range{min, max}), *v));
   return *v;
 }
 
 double refractive_index(const Query& q, const std::string& name,
                         std::optional<double> fallback = std::nullopt) {
-  return number(q, name, fallback, kMinIndex, kMaxIndex);
+  return number(q, name, fallback, limits::kFresnelIndex.min, limits::kFresnelIndex.max);
 }
 
 ConductorSpec parse_conductor(const Query& q) {
@@ -47,7 +48,8 @@ ConductorSpec parse_conductor(const Query& q) {
   if (!given(q, "eta")) throw invalid_field("eta", "is required with 'k' (or give 'metal')");
   if (!given(q, "k")) throw invalid_field("k", "is required with 'eta' (0 for a dielectric)");
   const double eta = refractive_index(q, "eta");
-  const double k = number(q, "k", std::nullopt, 0.0, kMaxIndex);
+  const double k =
+      number(q, "k", std::nullopt, limits::kFresnelExtinction.min, limits::kFresnelExtinction.max);
   c.eta = {eta, eta, eta};
   c.k = {k, k, k};
   return c;
@@ -57,8 +59,9 @@ ConductorSpec parse_conductor(const Query& q) {
 
 FresnelRequest parse_fresnel_query(const Query& q) {
   FresnelRequest r;
-  r.csv = query_enum(q, "format", "json", {"json", "csv"}) == "csv";
-  r.step = number(q, "step", 1.0, kMinStep, 90.0);
+  r.csv = query_enum(q, "format", TableFormat::JsonDocument) == TableFormat::Csv;
+  r.step =
+      number(q, kFresnelStep.name, kFresnelStep.fallback, kFresnelStep.range.min, kFresnelStep.range.max);
   r.eta_i = refractive_index(q, "eta_i", 1.0);
   const bool conductor = given(q, "metal") || given(q, "eta") || given(q, "k");
   if (conductor) {

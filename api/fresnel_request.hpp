@@ -14,6 +14,12 @@ struct ConductorSpec {
   Rgb64 eta{}, k{};
 };
 
+enum class TableFormat { JsonDocument, Csv };
+constexpr auto enum_entries(TableFormat) {
+  return std::to_array<EnumEntry<TableFormat>>(
+      {{TableFormat::JsonDocument, "json"}, {TableFormat::Csv, "csv"}});
+}
+
 struct FresnelRequest {
   double eta_i = 1.0;                      // outside / incident medium (default: air)
   double eta_t = 1.0;                      // dielectric tables only
@@ -22,11 +28,8 @@ struct FresnelRequest {
   bool csv = false;
 };
 
-// Indices (eta_i, eta_t, eta) lie in [kMinIndex, kMaxIndex]; k in [0, kMaxIndex]; step in [kMinStep, 90].
-inline constexpr double kMinIndex = 1e-3;
-inline constexpr double kMaxIndex = 1000.0;
-inline constexpr double kMinStep = 0.01;
-
+// Indices (eta_i, eta_t, eta) lie in limits::kFresnelIndex, k in limits::kFresnelExtinction, step in
+// limits::kFresnelStepDeg.
 // Throws ApiError 400 "invalid_field" naming the parameter: missing, not a finite number, out of range,
 // an unknown metal, or a mix of dielectric and conductor parameters. (Unknown and repeated parameters
 // are refused for every endpoint by the server's query policy.)

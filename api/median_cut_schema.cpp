@@ -21,8 +21,8 @@ std::string median_cut_json(const MedianCutResult& r, double elapsed_ms, bool ca
   std::string out;
   out.reserve(256 + r.lights.size() * 230);
   fmt::format_to(std::back_inserter(out), R"({{"count":{},"placement":"{}","split":"{}","luminance":"{}","lights":[)",
-                 r.lights.size(), light_placement_name(r.params.placement), split_rule_name(r.params.split),
-                 luminance_mode_name(r.params.luminance));
+                 r.lights.size(), enum_name(r.params.placement), enum_name(r.params.split),
+                 enum_name(r.params.luminance));
   for (size_t i = 0; i < r.lights.size(); ++i) {
     if (i > 0) out.push_back(',');
     append_light(out, r.lights[i]);

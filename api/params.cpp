@@ -7,6 +7,7 @@
 
 #include "api/api_error.hpp"
 #include "api/excerpt.hpp"
+#include "engine/core/limits.hpp"
 
 namespace lp::api {
 namespace {
@@ -26,7 +27,8 @@ double parse_double(const std::string& field, const std::string& text) {
 }
 
 void check_range(const std::string& field, double v, double min, double max) {
-  if (v < min || v > max) throw invalid_field(field, fmt::format("{} is out of range [{}, {}]", v, min, max));
+  if (v < min || v > max)
+    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range{min, max}), v));
 }
 
 int64_t parse_int(const std::string& field, const std::string& text) {
@@ -40,7 +42,8 @@ int64_t parse_int(const std::string& field, const std::string& text) {
 }
 
 void check_int_range(const std::string& field, int64_t v, int64_t min, int64_t max) {
-  if (v < min || v > max) throw invalid_field(field, fmt::format("{} is out of range [{}, {}]", v, min, max));
+  if (v < min || v > max)
+    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range{min, max}), v));
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
+
+#include "engine/core/enum_table.hpp"
 
 namespace lp::api {
 
@@ -46,5 +49,17 @@ std::string json_enum(const Json& body, const std::string& name, const std::stri
                       const std::vector<std::string>& allowed, const std::string& prefix = "");
 
 std::string join(const std::vector<std::string>& items, const std::string& sep);
+
+// An enum parameter: its allowed names and its parse come from the enum's table (enum_table.hpp).
+template <class E>
+requires std::is_enum_v<E> E query_enum(const Query& q, const std::string& name, E fallback) {
+  return *parse_enum<E>(query_enum(q, name, enum_name(fallback), enum_names<E>()));
+}
+
+template <class E>
+requires std::is_enum_v<E> E json_enum(const Json& body, const std::string& name, E fallback,
+                                       const std::string& prefix = "") {
+  return *parse_enum<E>(json_enum(body, name, enum_name(fallback), enum_names<E>(), prefix));
+}
 
 }  // namespace lp::api

@@ -8,7 +8,9 @@
 #include <limits>
 
 #include "api/api_error.hpp"
+#include "api/engine_validation.hpp"
 #include "api/excerpt.hpp"
+#include "engine/core/validate.hpp"
 #include "engine/fresnel/metals.hpp"
 
 namespace lp::api {
@@ -16,11 +18,9 @@ namespace {
 
 using namespace lp::render;
 
-constexpr double kMaxCoordinate = 1e6;  // scene coordinates and sizes
-constexpr double kMaxIor = 4.0;
-
+// Values are read as finite numbers here; their ranges are the engine's (validate() in scene_desc.hpp).
 std::string field_name(const std::string& prefix, const std::string& name) {
-  return prefix.empty() ? name : prefix + "." + name;
+  return field_path(prefix, name);
 }
 
 const Json* member(const Json& parent, const std::string& name) {
@@ -36,42 +36,39 @@ const Json* object_member(const Json& parent, const std::string& name, const std
   return v;
 }
 
-float component(const Json& v, const std::string& field, double min, double max) {
+float component(const Json& v, const std::string& field) {
   if (!v.is_number()) throw invalid_field(field, fmt::format("must be a number, got {}", describe(v)));
   const double x = v.get<double>();
-  if (!std::isfinite(x) || x < min || x > max)
-    throw invalid_field(field, fmt::format("{} is out of range [{}, {}]", x, min, max));
+  if (!std::isfinite(x)) throw invalid_field(field, "must be finite");
   return float(x);
 }
 
-// [x, y, z] with every component in [min, max]; nullopt if absent.
-std::optional<Vec3> json_vec3(const Json& parent, const std::string& name, const std::string& prefix,
-                              double min, double max) {
+// [x, y, z]; nullopt if absent.
+std::optional<Vec3> json_vec3(const Json& parent, const std::string& name, const std::string& prefix) {
   const Json* v = member(parent, name);
   if (!v) return std::nullopt;
   const std::string field = field_name(prefix, name);
   if (!v->is_array() || v->size() != 3)
     throw invalid_field(field, fmt::format("must be an array of 3 numbers, got {}", describe(*v)));
-  return Vec3{component((*v)[0], field + "[0]", min, max), component((*v)[1], field + "[1]", min, max),
-              component((*v)[2], field + "[2]", min, max)};
+  return Vec3{component((*v)[0], field + "[0]"), component((*v)[1], field + "[1]"),
+              component((*v)[2], field + "[2]")};
 }
 
 Vec3 required_vec3(const Json& parent, const std::string& name, const std::string& prefix) {
-  auto v = json_vec3(parent, name, prefix, -kMaxCoordinate, kMaxCoordinate);
+  auto v = json_vec3(parent, name, prefix);
   if (!v) throw invalid_field(field_name(prefix, name), "is required");
   return *v;
 }
 
-// A colour: one number (grey) or [r, g, b], each in [min, max].
-Rgb json_rgb(const Json& parent, const std::string& name, const std::string& prefix, Rgb fallback, double min,
-             double max) {
+// A colour: one number (grey) or [r, g, b].
+Rgb json_rgb(const Json& parent, const std::string& name, const std::string& prefix, Rgb fallback) {
   const Json* v = member(parent, name);
   if (!v) return fallback;
   if (v->is_number()) {
-    const float g = component(*v, field_name(prefix, name), min, max);
+    const float g = component(*v, field_name(prefix, name));
     return {g, g, g};
   }
-  return *json_vec3(parent, name, prefix, min, max);
+  return *json_vec3(parent, name, prefix);
 }
 
 // A required string that must be one of `allowed`.
@@ -81,25 +78,22 @@ std::string required_enum(const Json& parent, const std::string& name,
   return json_enum(parent, name, v, allowed, prefix);
 }
 
-// An integer whose default also respects the server's limit.
-int bounded_int(const Json& parent, const std::string& name, int fallback, int min, int max) {
-  return int(json_int(parent, name, std::min(fallback, max), min, max));
+// An integer in [min, the server's limit], whose default also respects the limit.
+int bounded_int(const Json& parent, const std::string& name, int fallback, int64_t min, int64_t limit) {
+  const int64_t max = std::min<int64_t>(limit, std::numeric_limits<int>::max());
+  return int(json_int(parent, name, std::min<int64_t>(fallback, max), min, max));
 }
 
-float json_float(const Json& parent, const std::string& name, double fallback, double min, double max,
-                 const std::string& prefix) {
-  return float(json_double(parent, name, fallback, min, max, prefix));
-}
-
-Vec3 nonzero_direction(Vec3 v, const std::string& field) {
-  if (!(length(v) > 1e-9f)) throw invalid_field(field, "must not be the zero vector");
-  return normalize(v);
+// A finite number (its range is checked by the engine's validate()).
+float json_float(const Json& parent, const std::string& name, double fallback, const std::string& prefix) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return float(json_double(parent, name, fallback, -kMax, kMax, prefix));
 }
 
 Material parse_conductor(const Json& m, const std::string& prefix) {
   reject_unknown_fields(m, {"type", "metal", "eta", "k", "roughness"}, prefix);
   ConductorMaterial c;
-  c.roughness = json_float(m, "roughness", 0.0, 0.0, 1.0, prefix);
+  c.roughness = json_float(m, "roughness", c.roughness, prefix);
   const bool has_metal = member(m, "metal"), has_eta = member(m, "eta"), has_k = member(m, "k");
   if (has_metal) {
     if (has_eta || has_k)
@@ -112,8 +106,8 @@ Material parse_conductor(const Json& m, const std::string& prefix) {
     if (!has_eta || !has_k)
       throw invalid_field(field_name(prefix, has_eta ? "k" : "eta"),
                           "is required (give metal, e.g. \"gold\", or both eta and k)");
-    c.eta = json_rgb(m, "eta", prefix, {}, 0.001, 20.0);
-    c.k = json_rgb(m, "k", prefix, {}, 0.0, 20.0);
+    c.eta = json_rgb(m, "eta", prefix, {});
+    c.k = json_rgb(m, "k", prefix, {});
   }
   return c;
 }
@@ -124,42 +118,34 @@ Material parse_material(const Json* m, const std::string& prefix) {
       required_enum(*m, "type", {"diffuse", "mirror", "dielectric", "plastic", "conductor"}, prefix);
   if (type == "diffuse") {
     reject_unknown_fields(*m, {"type", "albedo"}, prefix);
-    return DiffuseMaterial{json_rgb(*m, "albedo", prefix, DiffuseMaterial{}.albedo, 0.0, 1.0)};
+    return DiffuseMaterial{json_rgb(*m, "albedo", prefix, DiffuseMaterial{}.albedo)};
   }
   if (type == "mirror") {
     reject_unknown_fields(*m, {"type", "color"}, prefix);
-    return MirrorMaterial{json_rgb(*m, "color", prefix, MirrorMaterial{}.color, 0.0, 1.0)};
+    return MirrorMaterial{json_rgb(*m, "color", prefix, MirrorMaterial{}.color)};
   }
   if (type == "dielectric") {
     reject_unknown_fields(*m, {"type", "ior"}, prefix);
-    return DielectricMaterial{json_float(*m, "ior", DielectricMaterial{}.ior, 1.0, kMaxIor, prefix)};
+    return DielectricMaterial{json_float(*m, "ior", DielectricMaterial{}.ior, prefix)};
   }
   if (type == "plastic") {
     reject_unknown_fields(*m, {"type", "albedo", "ior", "roughness"}, prefix);
     const PlasticMaterial d;
-    return PlasticMaterial{json_rgb(*m, "albedo", prefix, d.albedo, 0.0, 1.0),
-                           json_float(*m, "ior", d.ior, 1.0, kMaxIor, prefix),
-                           json_float(*m, "roughness", d.roughness, 0.0, 1.0, prefix)};
+    return PlasticMaterial{json_rgb(*m, "albedo", prefix, d.albedo), json_float(*m, "ior", d.ior, prefix),
+                           json_float(*m, "roughness", d.roughness, prefix)};
   }
   return parse_conductor(*m, prefix);
 }
 
-// Checked and resolved inside the data directory by the server (server/data_dir.hpp).
-std::filesystem::path mesh_path(const Json& o, const std::string& prefix) {
-  const std::string text = json_string(o, "path", std::nullopt, prefix);
-  if (text.empty()) throw invalid_field(field_name(prefix, "path"), "must not be empty");
-  return text;
-}
-
 MeshObject parse_mesh(const Json& o, const std::string& prefix) {
   MeshObject mesh;
-  mesh.path = mesh_path(o, prefix);
+  mesh.path = json_string(o, "path", std::nullopt, prefix);  // resolved in the data directory by the server
   if (const Json* t = object_member(o, "transform", prefix)) {
     const std::string tp = field_name(prefix, "transform");
     reject_unknown_fields(*t, {"translate", "scale", "rotate_deg"}, tp);
-    mesh.translate = json_vec3(*t, "translate", tp, -kMaxCoordinate, kMaxCoordinate).value_or(Vec3{});
-    mesh.scale = json_float(*t, "scale", 1.0, 1e-6, kMaxCoordinate, tp);
-    mesh.rotate_deg = json_vec3(*t, "rotate_deg", tp, -360.0, 360.0).value_or(Vec3{});
+    mesh.translate = json_vec3(*t, "translate", tp).value_or(mesh.translate);
+    mesh.scale = json_float(*t, "scale", mesh.scale, tp);
+    mesh.rotate_deg = json_vec3(*t, "rotate_deg", tp).value_or(mesh.rotate_deg);
   }
   return mesh;
 }
@@ -173,13 +159,13 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
     SphereObject s;
     s.center = required_vec3(o, "center", prefix);
     if (!member(o, "radius")) throw invalid_field(field_name(prefix, "radius"), "is required");
-    s.radius = json_float(o, "radius", 1.0, 1e-6, kMaxCoordinate, prefix);
+    s.radius = json_float(o, "radius", s.radius, prefix);
     object.shape = s;
   } else if (type == "plane") {
     reject_unknown_fields(o, {"type", "point", "normal", "material"}, prefix);
     PlaneObject p;
     p.point = required_vec3(o, "point", prefix);
-    p.normal = nonzero_direction(required_vec3(o, "normal", prefix), field_name(prefix, "normal"));
+    p.normal = required_vec3(o, "normal", prefix);
     object.shape = p;
   } else {
     reject_unknown_fields(o, {"type", "path", "transform", "material"}, prefix);
@@ -192,21 +178,14 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
 Camera parse_camera(const Json& c, Camera camera) {
   const std::string prefix = "scene.camera";
   reject_unknown_fields(c, {"position", "look_at", "up", "fov_deg"}, prefix);
-  camera.position =
-      json_vec3(c, "position", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.position);
-  camera.look_at = json_vec3(c, "look_at", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.look_at);
-  camera.up = json_vec3(c, "up", prefix, -kMaxCoordinate, kMaxCoordinate).value_or(camera.up);
-  camera.fov_deg = json_float(c, "fov_deg", camera.fov_deg, 1.0, 179.0, prefix);
-  const Vec3 view = camera.look_at - camera.position;
-  if (!(length(view) > 1e-6f))
-    throw invalid_field(prefix + ".look_at", "must differ from scene.camera.position");
-  const Vec3 up = nonzero_direction(camera.up, prefix + ".up");
-  if (length(cross(normalize(view), up)) < 1e-4f)
-    throw invalid_field(prefix + ".up", "must not be parallel to the viewing direction (look_at - position)");
+  camera.position = json_vec3(c, "position", prefix).value_or(camera.position);
+  camera.look_at = json_vec3(c, "look_at", prefix).value_or(camera.look_at);
+  camera.up = json_vec3(c, "up", prefix).value_or(camera.up);
+  camera.fov_deg = json_float(c, "fov_deg", camera.fov_deg, prefix);
   return camera;
 }
 
-SceneDesc parse_scene(const Json* s, const RenderLimits& limits, std::optional<std::string>& preset) {
+SceneDesc parse_scene(const Json* s, const RequestLimits& limits, std::optional<std::string>& preset) {
   const Json empty = Json::object();
   if (!s) s = &empty;  // no scene, or neither objects nor preset: the "sphere" preset
   reject_unknown_fields(*s, {"preset", "camera", "objects"}, "scene");
@@ -216,9 +195,9 @@ SceneDesc parse_scene(const Json* s, const RenderLimits& limits, std::optional<s
   if (objects) {
     if (!objects->is_array())
       throw invalid_field("scene.objects", fmt::format("must be an array, got {}", describe(*objects)));
-    if (int64_t(objects->size()) > limits.max_objects)
+    if (int64_t(objects->size()) > limits.max_render_objects)
       throw invalid_field("scene.objects", fmt::format("{} objects is over the limit of {}", objects->size(),
-                                                       limits.max_objects));
+                                                       limits.max_render_objects));
     for (size_t i = 0; i < objects->size(); ++i)
       scene.objects.push_back(parse_object((*objects)[i], fmt::format("scene.objects[{}]", i)));
   } else {
@@ -232,41 +211,24 @@ SceneDesc parse_scene(const Json* s, const RenderLimits& limits, std::optional<s
   return scene;
 }
 
-Lighting parse_lighting(const Json* l, const RenderLimits& limits) {
+Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
   Lighting lighting;
-  lighting.lights = std::min(lighting.lights, limits.max_lights);
+  const int max_lights = int(std::min<int64_t>(limits.max_lights, std::numeric_limits<int>::max()));
+  lighting.lights = std::min(lighting.lights, max_lights);
   if (!l) return lighting;
   const std::string prefix = "lighting";
   reject_unknown_fields(*l, {"mode", "lights", "rotation_deg", "intensity", "visible"}, prefix);
-  const std::vector<std::string> modes = {"envmap", "uniform", "bsdf", "median_cut", "median_cut_all"};
-  const std::string mode = json_enum(*l, "mode", "envmap", modes, prefix);
-  lighting.mode = LightingMode(std::find(modes.begin(), modes.end(), mode) - modes.begin());
-  lighting.lights = int(json_int(*l, "lights", lighting.lights, 1, limits.max_lights, prefix));
-  lighting.rotation_deg = json_float(*l, "rotation_deg", 0.0, -360.0, 360.0, prefix);
-  lighting.intensity = json_float(*l, "intensity", 1.0, 0.0, 1e6, prefix);
-  lighting.visible = json_bool(*l, "visible", true, prefix);
+  lighting.mode = json_enum(*l, "mode", lighting.mode, prefix);
+  lighting.lights = int(json_int(*l, "lights", lighting.lights, 1, max_lights, prefix));
+  lighting.rotation_deg = json_float(*l, "rotation_deg", lighting.rotation_deg, prefix);
+  lighting.intensity = json_float(*l, "intensity", lighting.intensity, prefix);
+  lighting.visible = json_bool(*l, "visible", lighting.visible, prefix);
   return lighting;
 }
 
 }  // namespace
 
-const char* lighting_mode_name(LightingMode mode) {
-  switch (mode) {
-    case LightingMode::EnvMap:
-      return "envmap";
-    case LightingMode::Uniform:
-      return "uniform";
-    case LightingMode::Bsdf:
-      return "bsdf";
-    case LightingMode::MedianCut:
-      return "median_cut";
-    case LightingMode::MedianCutAll:
-      return "median_cut_all";
-  }
-  return "?";
-}
-
-RenderRequest parse_render_request(const Json& body, const RenderLimits& limits) {
+RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed"});
   RenderRequest r;
@@ -275,12 +237,20 @@ RenderRequest parse_render_request(const Json& body, const RenderLimits& limits)
   r.scene = parse_scene(object_member(body, "scene", ""), limits, r.preset);
   r.lighting = parse_lighting(object_member(body, "lighting", ""), limits);
   const RenderSettings d;
-  r.settings.width = bounded_int(body, "width", d.width, 1, limits.max_width);
-  r.settings.height = bounded_int(body, "height", d.height, 1, limits.max_height);
-  r.settings.spp = bounded_int(body, "spp", d.spp, 1, limits.max_spp);
-  r.settings.max_depth = bounded_int(body, "max_depth", d.max_depth, 0, limits.max_depth);
+  r.settings.width = bounded_int(body, "width", d.width, 1, limits.max_render_width);
+  r.settings.height = bounded_int(body, "height", d.height, 1, limits.max_render_height);
+  r.settings.spp = bounded_int(body, "spp", d.spp, 1, limits.max_render_spp);
+  r.settings.max_depth =
+      bounded_int(body, "max_depth", d.max_depth, limits::kMaxDepth.min, limits.max_render_depth);
   r.settings.mesh_limits.max_triangles = limits.max_mesh_triangles;
   r.settings.seed = uint64_t(json_int(body, "seed", int64_t(d.seed), 0, std::numeric_limits<int64_t>::max()));
+  as_invalid_field([&] {
+    r.scene.validate("scene");
+    r.lighting.validate("lighting");
+    r.settings.validate("");
+  });
+  for (SceneObject& o : r.scene.objects)
+    if (auto* plane = std::get_if<PlaneObject>(&o.shape)) plane->normal = normalize(plane->normal);
   return r;
 }
 

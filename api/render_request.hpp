@@ -7,20 +7,11 @@
 #include <optional>
 #include <string>
 
+#include "api/parameters.hpp"
 #include "api/params.hpp"
 #include "engine/render/scene_desc.hpp"
 
 namespace lp::api {
-
-struct RenderLimits {
-  int max_width = 4096;
-  int max_height = 4096;
-  int max_spp = 65536;
-  int max_depth = 64;
-  int max_objects = 256;
-  int max_lights = 65536;  // median-cut lights
-  int64_t max_mesh_triangles = 2'000'000;  // per mesh, checked by the renderer while loading
-};
 
 struct RenderRequest {
   std::string envmap;                 // id of a loaded map (checked by the server)
@@ -30,8 +21,6 @@ struct RenderRequest {
   render::RenderSettings settings;
 };
 
-RenderRequest parse_render_request(const Json& body, const RenderLimits& limits);
-
-const char* lighting_mode_name(render::LightingMode mode);  // "envmap", "uniform", ...
+RenderRequest parse_render_request(const Json& body, const RequestLimits& limits);
 
 }  // namespace lp::api

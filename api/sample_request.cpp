@@ -1,34 +1,45 @@
 #include "api/sample_request.hpp"
 
+#include <algorithm>
+
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 
 namespace lp::api {
 namespace {
-const std::vector<std::string> kStrategies = {"independent", "stratified", "sobol"};
-const std::vector<std::string> kLuminance = {"average", "rec709"};
-constexpr int64_t kMaxSeed = int64_t{1} << 53;  // exact in a JSON number
+
+int64_t count(int64_t given, const NumberField& f, const RequestLimits& limits) {
+  return std::min<int64_t>(given, std::min<int64_t>(int64_t(f.range.max), limits.max_samples));
+}
+
 }  // namespace
 
-SampleRequest parse_sample_request(const Json& body, int64_t max_samples) {
+SampleRequest parse_sample_request(const Json& body, const RequestLimits& limits) {
   reject_unknown_fields(body, {"count", "seed", "strategy", "luminance"});
-  if (!body.contains("count")) throw invalid_field("count", "is required");
+  if (!body.contains(kSampleCount.name)) throw invalid_field(kSampleCount.name, "is required");
+  const auto& c = kSampleCount;
+  const auto& s = kSampleSeed;
   SampleRequest r;
-  r.spec.count = uint64_t(json_int(body, "count", 0, 1, max_samples));
-  r.spec.seed = uint64_t(json_int(body, "seed", 0, 0, kMaxSeed));
-  r.spec.strategy = *parse_strategy(json_enum(body, "strategy", "independent", kStrategies));
-  r.luminance = *parse_luminance_mode(json_enum(body, "luminance", "average", kLuminance));
+  r.spec.count =
+      uint64_t(json_int(body, c.name, 0, int64_t(c.range.min), count(limits.max_samples, c, limits)));
+  r.spec.seed =
+      uint64_t(json_int(body, s.name, int64_t(*s.fallback), int64_t(s.range.min), int64_t(s.range.max)));
+  r.spec.strategy = json_enum(body, "strategy", SampleStrategy::Independent);
+  r.luminance = json_enum(body, "luminance", LuminanceMode::Average);
   return r;
 }
 
-SampleImageRequest parse_sample_image_query(const Query& q, int64_t max_samples) {
+SampleImageRequest parse_sample_image_query(const Query& q, const RequestLimits& limits) {
+  const auto& c = kSampleImageCount;
+  const auto& s = kSampleSeed;
   SampleImageRequest r;
-  r.samples.spec.count = uint64_t(query_int(q, "count", 256, 1, max_samples));
-  r.samples.spec.seed = uint64_t(query_int(q, "seed", 0, 0, kMaxSeed));
-  r.samples.spec.strategy = *parse_strategy(query_enum(q, "strategy", "independent", kStrategies));
-  r.samples.luminance = *parse_luminance_mode(query_enum(q, "luminance", "average", kLuminance));
-  r.style = query_enum(q, "style", "marks", {"marks", "windows"}) == "marks" ? SampleImageStyle::Marks
-                                                                              : SampleImageStyle::Windows;
+  r.samples.spec.count = uint64_t(
+      query_int(q, c.name, int64_t(*c.fallback), int64_t(c.range.min), count(limits.max_samples, c, limits)));
+  r.samples.spec.seed =
+      uint64_t(query_int(q, s.name, int64_t(*s.fallback), int64_t(s.range.min), int64_t(s.range.max)));
+  r.samples.spec.strategy = query_enum(q, "strategy", SampleStrategy::Independent);
+  r.samples.luminance = query_enum(q, "luminance", LuminanceMode::Average);
+  r.style = query_enum(q, "style", SampleImageStyle::Marks);
   r.tone = parse_tone_map(q);
   return r;
 }

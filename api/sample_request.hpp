@@ -2,6 +2,7 @@
 // POST /envmaps/{id}/samples body and GET /envmaps/{id}/samples.png query.
 #include <cstdint>
 
+#include "api/parameters.hpp"
 #include "api/params.hpp"
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image_io.hpp"
@@ -14,9 +15,13 @@ struct SampleRequest {
   LuminanceMode luminance = LuminanceMode::Average;
 };
 
-SampleRequest parse_sample_request(const Json& body, int64_t max_samples);
+SampleRequest parse_sample_request(const Json& body, const RequestLimits& limits);
 
 enum class SampleImageStyle { Marks, Windows };
+constexpr auto enum_entries(SampleImageStyle) {
+  return std::to_array<EnumEntry<SampleImageStyle>>(
+      {{SampleImageStyle::Marks, "marks"}, {SampleImageStyle::Windows, "windows"}});
+}
 
 struct SampleImageRequest {
   SampleRequest samples;
@@ -24,7 +29,7 @@ struct SampleImageRequest {
   ToneMap tone;
 };
 
-SampleImageRequest parse_sample_image_query(const Query& q, int64_t max_samples);
+SampleImageRequest parse_sample_image_query(const Query& q, const RequestLimits& limits);
 
 // One binary sample record: 13 little-endian float32 values, in this order.
 inline constexpr const char* kSampleRecordLayout =

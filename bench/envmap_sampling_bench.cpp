@@ -173,7 +173,7 @@ void BM_GenerateSet(benchmark::State& state) {
   generate_samples(*sampler, {strategy, kBatch, 1}, 0, std::span(out).first(1));
   for (auto _ : state) generate_samples(*sampler, {strategy, kBatch, 1}, 0, out);
   state.SetItemsProcessed(state.iterations() * kBatch);
-  state.SetLabel(strategy_name(strategy));
+  state.SetLabel(enum_name(strategy));
 }
 BENCHMARK(BM_GenerateSet)
     ->ArgsProduct({{1024, 4096}, {0, 1, 2}})

@@ -36,7 +36,7 @@ std::shared_ptr<const lp::EnvMap> load_map(const std::filesystem::path& path) {
   auto map = std::make_shared<const lp::EnvMap>(std::move(decoded.image));
   const lp::Rgb power = map->power();
   std::printf("map %s: %d x %d %s, power %.4f %.4f %.4f\n", path.string().c_str(), map->width(),
-              map->height(), lp::format_name(decoded.format), power.x, power.y, power.z);
+              map->height(), lp::enum_name(decoded.format), power.x, power.y, power.z);
   return map;
 }
 

@@ -18,7 +18,7 @@ inline JobManagerConfig render_job_config(const Options& o) {
 
 // Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
 inline int64_t decoding_budget_bytes(const Options& o) {
-  return std::min(o.max_memory_mb << 20, 2 * EnvMap::image_bytes(o.max_pixels, 1));
+  return std::min(o.max_memory_mb << 20, 2 * EnvMap::image_bytes(o.limits.max_pixels, 1));
 }
 
 struct App {

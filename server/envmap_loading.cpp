@@ -72,7 +72,7 @@ std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& n
 
 ImageLimits image_limits(const Options& options) {
   ImageLimits limits;
-  limits.max_pixels = options.max_pixels;
+  limits.max_pixels = options.limits.max_pixels;
   return limits;
 }
 
@@ -83,7 +83,7 @@ std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::st
   check_new_name(app, name);
   DecodeMemory memory;
   DecodedImage decoded = read_image(bytes, budgeted_limits(app, memory));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy,
+  return register_image(app, name, std::move(decoded), enum_name(decoded.format), source, policy,
                         std::move(memory.pixels));
 }
 
@@ -98,7 +98,7 @@ std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::str
       unknown_size ? 0 : int64_t(file_bytes), MemoryUse::Transient, "reading the file of map '" + name + "'");
   DecodeMemory memory;
   DecodedImage decoded = read_image_file(path, budgeted_limits(app, memory));
-  return register_image(app, name, std::move(decoded), format_name(decoded.format), source, policy,
+  return register_image(app, name, std::move(decoded), enum_name(decoded.format), source, policy,
                         std::move(memory.pixels));
 }
 

@@ -20,31 +20,6 @@ std::string iso8601(std::chrono::system_clock::time_point t) {
 
 }  // namespace
 
-const char* status_name(JobStatus status) {
-  switch (status) {
-    case JobStatus::Queued:
-      return "queued";
-    case JobStatus::Running:
-      return "running";
-    case JobStatus::Done:
-      return "done";
-    case JobStatus::Failed:
-      return "failed";
-    case JobStatus::Cancelled:
-      return "cancelled";
-    case JobStatus::Interrupted:
-      return "interrupted";
-  }
-  return "?";
-}
-
-std::optional<JobStatus> parse_status(const std::string& name) {
-  for (const auto s : {JobStatus::Queued, JobStatus::Running, JobStatus::Done, JobStatus::Failed,
-                       JobStatus::Cancelled, JobStatus::Interrupted})
-    if (name == status_name(s)) return s;
-  return std::nullopt;
-}
-
 bool is_finished(JobStatus status) {
   return status != JobStatus::Queued && status != JobStatus::Running;
 }
@@ -79,7 +54,7 @@ std::optional<JobError> Job::error() const {
 nlohmann::json Job::status_json() const {
   nlohmann::json out;
   out["id"] = id_;
-  out["status"] = status_name(status());
+  out["status"] = enum_name(status());
   out["progress"] = progress();
   out["elapsed_s"] = elapsed_s();
   out["created"] = iso8601(created_);

@@ -12,15 +12,22 @@
 #include <string>
 
 #include "api/error_codes.hpp"
+#include "engine/core/enum_table.hpp"
 
 namespace lp::server {
 
 // Interrupted: stopped by a shutdown (or found unfinished after a crash); it can be resumed as a new run.
 enum class JobStatus { Queued, Running, Done, Failed, Cancelled, Interrupted };
 
-const char* status_name(JobStatus status);                       // "queued", "running", ...
-std::optional<JobStatus> parse_status(const std::string& name);  // inverse of status_name
-bool is_finished(JobStatus status);                              // done, failed, cancelled or interrupted
+constexpr auto enum_entries(JobStatus) {
+  return std::to_array<EnumEntry<JobStatus>>({{JobStatus::Queued, "queued"},
+                                              {JobStatus::Running, "running"},
+                                              {JobStatus::Done, "done"},
+                                              {JobStatus::Failed, "failed"},
+                                              {JobStatus::Cancelled, "cancelled"},
+                                              {JobStatus::Interrupted, "interrupted"}});
+}
+bool is_finished(JobStatus status);  // done, failed, cancelled or interrupted
 
 struct JobError {
   std::string code;  // a name of api/error_codes.hpp ("corrupt", "not_found", "internal", ...)

@@ -14,16 +14,17 @@
 #include <thread>
 #include <vector>
 
+#include "api/parameters.hpp"
 #include "server/job.hpp"
 
 namespace lp::server {
 
 struct JobManagerConfig {
-  int max_running = 2;                            // runner threads = jobs running at once
-  int max_queued = 16;                            // jobs waiting for a runner (beyond the idle runners)
-  int max_finished = 64;                          // finished jobs kept
-  int64_t max_finished_bytes = int64_t{1} << 30;  // and the results they keep
-  int arena_concurrency = 0;                      // threads per job arena; 0 = all cores
+  int max_running = int(api::kMaxRunningJobs.fallback);  // runner threads = jobs running at once
+  int max_queued = int(api::kMaxQueuedJobs.fallback);  // jobs waiting for a runner (beyond the idle runners)
+  int max_finished = int(api::kMaxFinishedJobs.fallback);           // finished jobs kept
+  int64_t max_finished_bytes = api::kMaxFinishedMb.fallback << 20;  // and the results they keep
+  int arena_concurrency = 0;                                        // threads per job arena; 0 = all cores
 };
 
 class JobManager {

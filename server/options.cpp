@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "server/log_level.hpp"
 #include "server/machine_memory.hpp"
@@ -13,12 +15,11 @@
 namespace lp::server {
 namespace {
 
-constexpr const char* kUsage = R"(lightprobe-server: image-based lighting over HTTP/JSON
+constexpr const char* kUsageHead = R"(lightprobe-server: image-based lighting over HTTP/JSON
 
 Usage: lightprobe-server [options]
 
   --host ADDR            address to listen on (default 127.0.0.1)
-  --port N               port (default 8080; 0 picks a free port, printed on start)
   --allowed-host NAME    a Host header name to answer besides loopback and --host (repeatable); others
                          get 403 (a defence against DNS rebinding)
   --cors-origin ORIGIN   an origin (http://host:port, or *) whose pages may call the API (repeatable);
@@ -26,53 +27,105 @@ Usage: lightprobe-server [options]
   --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
   --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
   --web-dir DIR          static dashboard served at / (default: the source tree's web/); the API keeps /api
-  --threads N            worker threads for computation (default: all cores)
-  --max-upload-mb N      largest request body in MiB (default 512)
-  --max-pixels N         largest map in pixels (default 33554432 = 8192 x 4096)
-  --max-samples N        most samples per request (default 10000000)
-  --max-envmaps N        most maps held at once (default 64)
-  --max-lights N         most median-cut lights per request (default 65536)
-  --max-memory-mb N      MiB for maps, their sampling tables and caches, images in flight and render
-                         results; past it, caches are evicted, then requests get 503 or 507
-                         (default: half the machine's memory, or of its cgroup limit)
-  --max-render-width N   widest render in pixels (default 4096)
-  --max-render-height N  tallest render in pixels (default 4096)
-  --max-render-spp N     most samples per pixel of a render (default 65536)
-  --max-render-depth N   largest max_depth (path bounces) of a render (default 64)
-  --max-render-objects N most objects in a render's scene (default 256)
-  --max-mesh-triangles N most triangles in one mesh of a render (default 2000000)
-  --max-running-jobs N   renders running at once, each in its own thread arena (default 2)
-  --max-queued-jobs N    renders waiting to run; a full queue answers 503 (default 16)
-  --max-finished-jobs N  finished renders kept with their images, oldest dropped (default 64)
-  --max-finished-mb N    MiB of images kept by finished renders, oldest dropped (default 1024)
-  --max-event-streams N  concurrent render event streams (default 8)
-  --max-connections N    open connections at once; more are refused with 503 (default 1024)
-  --max-connections-per-client N
-                         open connections from one client address; more are refused with 503 (default 512)
-  --header-timeout-s N   seconds for a request line and its headers to arrive; then 408 (default 10)
-  --io-timeout-s N       seconds a body read or a response write may wait; then the connection closes (default 30)
-  --keep-alive-timeout-s N
-                         seconds an idle keep-alive connection stays open (default 5)
   --state-dir DIR        uploaded maps and render jobs kept across restarts (default ./lightprobe-state)
   --resume-interrupted   at start, resume the renders a crash or a stop interrupted
-  --shutdown-grace-s N   on SIGTERM/SIGINT, seconds running renders get to finish their pass (default 10)
   --log-level NAME       least severe messages written: {levels} (default info)
-  --access-log-sample N  access log: one line per N requests at info level, 0 for none; a 5xx answer
-                         is always logged, at error level (default 1: every request)
   --list-routes          print every registered route (METHOD PATH) and exit
   --version              print the version and exit
   --help                 print this help and exit
 )";
 
-int64_t parse_count(const std::string& flag, const std::string& value, int64_t min, int64_t max) {
+// An integer flag: its declaration and where its value goes.
+struct IntFlag {
+  const api::IntParameter* parameter;
+  void (*set)(Options&, int64_t);
+};
+
+template <auto Member>
+IntFlag option(const api::IntParameter& p) {
+  return {&p, [](Options& o, int64_t v) {
+            o.*Member = static_cast<std::remove_reference_t<decltype(o.*Member)>>(v);
+          }};
+}
+
+template <auto Member>
+IntFlag request_limit(const api::IntParameter& p) {
+  return {&p, [](Options& o, int64_t v) { o.limits.*Member = v; }};
+}
+
+const std::vector<IntFlag>& int_flags() {
+  static const std::vector<IntFlag> flags = {
+      option<&Options::port>(api::kPort),
+      option<&Options::threads>(api::kThreads),
+      option<&Options::max_upload_mb>(api::kMaxUploadMb),
+      request_limit<&api::RequestLimits::max_pixels>(api::kMaxPixels),
+      request_limit<&api::RequestLimits::max_samples>(api::kMaxSamples),
+      option<&Options::max_envmaps>(api::kMaxEnvmaps),
+      request_limit<&api::RequestLimits::max_lights>(api::kMaxLights),
+      option<&Options::max_memory_mb>(api::kMaxMemoryMb),
+      request_limit<&api::RequestLimits::max_render_width>(api::kMaxRenderWidth),
+      request_limit<&api::RequestLimits::max_render_height>(api::kMaxRenderHeight),
+      request_limit<&api::RequestLimits::max_render_spp>(api::kMaxRenderSpp),
+      request_limit<&api::RequestLimits::max_render_depth>(api::kMaxRenderDepth),
+      request_limit<&api::RequestLimits::max_render_objects>(api::kMaxRenderObjects),
+      request_limit<&api::RequestLimits::max_mesh_triangles>(api::kMaxMeshTriangles),
+      option<&Options::max_running_jobs>(api::kMaxRunningJobs),
+      option<&Options::max_queued_jobs>(api::kMaxQueuedJobs),
+      option<&Options::max_finished_jobs>(api::kMaxFinishedJobs),
+      option<&Options::max_finished_mb>(api::kMaxFinishedMb),
+      option<&Options::max_event_streams>(api::kMaxEventStreams),
+      option<&Options::max_connections>(api::kMaxConnections),
+      option<&Options::max_connections_per_client>(api::kMaxConnectionsPerClient),
+      option<&Options::header_timeout_s>(api::kHeaderTimeoutS),
+      option<&Options::io_timeout_s>(api::kIoTimeoutS),
+      option<&Options::keep_alive_timeout_s>(api::kKeepAliveTimeoutS),
+      option<&Options::shutdown_grace_s>(api::kShutdownGraceS),
+      option<&Options::access_log_sample>(api::kAccessLogSample),
+  };
+  return flags;
+}
+
+std::string int_flag_help(const api::IntParameter& p) {
+  const std::string name = fmt::format("--{} N", p.flag);
+  const std::string fallback = p.default_text ? p.default_text : std::to_string(p.fallback);
+  const std::string text = fmt::format("{} (default {})", p.help, fallback);
+  if (name.size() > 21) return fmt::format("  {}\n  {:21}  {}\n", name, "", text);
+  return fmt::format("  {:21}  {}\n", name, text);
+}
+
+// The flag of every declared integer parameter (api::int_parameters(), in that order).
+const IntFlag& int_flag(const api::IntParameter& p) {
+  for (const IntFlag& f : int_flags())
+    if (f.parameter == &p) return f;
+  throw std::logic_error(fmt::format("--{} is declared but sets no option", p.flag));
+}
+
+std::string usage() {
+  std::string out = fmt::format(fmt::runtime(kUsageHead), fmt::arg("levels", log_level_names()));
+  out += "\nNumbers:\n";
+  for (const api::IntParameter* p : api::int_parameters()) out += int_flag_help(*p);
+  return out;
+}
+
+int64_t parse_count(const std::string& flag, const std::string& value, Range<int64_t> range) {
   try {
     size_t used = 0;
     const long long v = std::stoll(value, &used);
-    if (used == value.size() && v >= min && v <= max) return v;
+    if (used == value.size() && range.contains(v)) return v;
   } catch (const std::exception&) {
   }
   throw std::invalid_argument(
-      fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, min, max, value));
+      fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, range.min, range.max, value));
+}
+
+// Sets the integer flag named `flag` and returns true, or returns false if no integer flag has that name.
+bool set_int_flag(Options& o, const std::string& flag, const std::function<std::string()>& value) {
+  for (const api::IntParameter* p : api::int_parameters())
+    if (flag == fmt::format("--{}", p->flag)) {
+      int_flag(*p).set(o, parse_count(flag, value(), p->range));
+      return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -90,15 +143,14 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       return argv[++i];
     };
     if (flag == "--help" || flag == "-h") {
-      std::cout << fmt::format(fmt::runtime(kUsage), fmt::arg("levels", log_level_names()));
+      std::cout << usage();
       return std::nullopt;
     } else if (flag == "--version") {
       std::cout << "lightprobe-server " << LIGHTPROBE_VERSION << "\n";
       return std::nullopt;
     } else if (flag == "--log-level") {
       o.log_level = parse_log_level(value());
-    } else if (flag == "--access-log-sample") {
-      o.access_log_sample = parse_count(flag, value(), 0, int64_t{1} << 40);
+    } else if (set_int_flag(o, flag, value)) {
     } else if (flag == "--list-routes") {
       o.list_routes = true;
     } else if (flag == "--host") {
@@ -107,8 +159,6 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.allowed_hosts.push_back(value());
     } else if (flag == "--cors-origin") {
       o.cors_origins.push_back(value());
-    } else if (flag == "--port") {
-      o.port = int(parse_count(flag, value(), 0, 65535));
     } else if (flag == "--data-dir") {
       o.data_dir = value();
     } else if (flag == "--load") {
@@ -119,59 +169,11 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults) {
       o.loads.emplace_back(v.substr(0, eq), v.substr(eq + 1));
     } else if (flag == "--web-dir") {
       o.web_dir = value();
-    } else if (flag == "--threads") {
-      o.threads = int(parse_count(flag, value(), 1, 1024));
-    } else if (flag == "--max-upload-mb") {
-      o.max_upload_mb = parse_count(flag, value(), 1, 1 << 20);
-    } else if (flag == "--max-pixels") {
-      o.max_pixels = parse_count(flag, value(), 1, int64_t{1} << 34);
-    } else if (flag == "--max-samples") {
-      o.max_samples = parse_count(flag, value(), 1, int64_t{1} << 32);
-    } else if (flag == "--max-envmaps") {
-      o.max_envmaps = parse_count(flag, value(), 1, 100000);
-    } else if (flag == "--max-memory-mb") {
-      o.max_memory_mb = parse_count(flag, value(), 1, int64_t{1} << 30);
-    } else if (flag == "--max-lights") {
-      o.max_lights = parse_count(flag, value(), 1, int64_t{1} << 24);
-    } else if (flag == "--max-render-width") {
-      o.max_render_width = int(parse_count(flag, value(), 1, 65536));
-    } else if (flag == "--max-render-height") {
-      o.max_render_height = int(parse_count(flag, value(), 1, 65536));
-    } else if (flag == "--max-render-spp") {
-      o.max_render_spp = int(parse_count(flag, value(), 1, 1 << 24));
-    } else if (flag == "--max-render-depth") {
-      o.max_render_depth = int(parse_count(flag, value(), 0, 1024));
-    } else if (flag == "--max-render-objects") {
-      o.max_render_objects = int(parse_count(flag, value(), 0, 1 << 20));
-    } else if (flag == "--max-mesh-triangles") {
-      o.max_mesh_triangles = parse_count(flag, value(), 1, int64_t{1} << 32);
-    } else if (flag == "--max-running-jobs") {
-      o.max_running_jobs = int(parse_count(flag, value(), 1, 256));
-    } else if (flag == "--max-queued-jobs") {
-      o.max_queued_jobs = int(parse_count(flag, value(), 0, 1 << 20));
-    } else if (flag == "--max-finished-jobs") {
-      o.max_finished_jobs = int(parse_count(flag, value(), 1, 1 << 20));
-    } else if (flag == "--max-finished-mb") {
-      o.max_finished_mb = parse_count(flag, value(), 1, 1 << 24);
-    } else if (flag == "--max-event-streams") {
-      o.max_event_streams = int(parse_count(flag, value(), 0, 4096));
-    } else if (flag == "--max-connections") {
-      o.max_connections = int(parse_count(flag, value(), 1, 1 << 20));
-    } else if (flag == "--max-connections-per-client") {
-      o.max_connections_per_client = int(parse_count(flag, value(), 1, 1 << 20));
-    } else if (flag == "--header-timeout-s") {
-      o.header_timeout_s = int(parse_count(flag, value(), 1, 3600));
-    } else if (flag == "--io-timeout-s") {
-      o.io_timeout_s = int(parse_count(flag, value(), 1, 3600));
-    } else if (flag == "--keep-alive-timeout-s") {
-      o.keep_alive_timeout_s = int(parse_count(flag, value(), 1, 3600));
     } else if (flag == "--state-dir") {
       o.state_dir = value();
       if (o.state_dir.empty()) throw std::invalid_argument("--state-dir needs a directory");
     } else if (flag == "--resume-interrupted") {
       o.resume_interrupted = true;
-    } else if (flag == "--shutdown-grace-s") {
-      o.shutdown_grace_s = int(parse_count(flag, value(), 0, 3600));
     } else {
       throw std::invalid_argument("unknown option '" + flag + "' (see --help)");
     }

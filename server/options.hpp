@@ -9,52 +9,48 @@
 #include <utility>
 #include <vector>
 
+#include "api/parameters.hpp"
+
 namespace lp::server {
 
 // Half the memory of the machine (or of its cgroup limit).
 int64_t default_max_memory_mb();
 
+// Numeric defaults, ranges and help come from api/parameters.hpp.
 struct Options {
   std::string host = "127.0.0.1";
   std::vector<std::string> allowed_hosts;  // --allowed-host: Host names answered besides loopback and --host
   std::vector<std::string> cors_origins;   // --cors-origin: other origins that may call the API ("*": any)
-  int port = 8080;                         // 0 = any free port (printed on start)
+  int port = int(api::kPort.fallback);     // 0 = any free port (printed on start)
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
   std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)
-  int threads = 0;                                         // 0 = all cores
-  int64_t max_upload_mb = 512;
-  int64_t max_pixels = int64_t{8192} * 4096;
-  int64_t max_samples = 10'000'000;
-  int64_t max_envmaps = 64;
-  int64_t max_lights = 65536;
+  int threads = int(api::kThreads.fallback);               // 0 = all cores
+  int64_t max_upload_mb = api::kMaxUploadMb.fallback;
+  int64_t max_envmaps = api::kMaxEnvmaps.fallback;
+  api::RequestLimits
+      limits;  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
   int64_t max_memory_mb = default_max_memory_mb();
-  spdlog::level::level_enum log_level = spdlog::level::info;  // least severe messages written
-  int64_t access_log_sample = 1;                              // log 1 request in N (0: none; 5xx always)
+  spdlog::level::level_enum log_level = spdlog::level::info;   // least severe messages written
+  int64_t access_log_sample = api::kAccessLogSample.fallback;  // log 1 request in N (0: none; 5xx always)
   bool list_routes = false;  // print "METHOD PATH" per registered route and exit
-  // Renders (POST /api/v1/renders).
-  int max_render_width = 4096;
-  int max_render_height = 4096;
-  int max_render_spp = 65536;
-  int max_render_depth = 64;
-  int max_render_objects = 256;
-  int64_t max_mesh_triangles = 2'000'000;
-  int max_running_jobs = 2;
-  int max_queued_jobs = 16;
-  int max_finished_jobs = 64;
-  int64_t max_finished_mb = 1024;  // images kept by finished jobs
-  int max_event_streams = 8;       // concurrent GET .../events streams
+  // Render jobs (POST /api/v1/renders).
+  int max_running_jobs = int(api::kMaxRunningJobs.fallback);
+  int max_queued_jobs = int(api::kMaxQueuedJobs.fallback);
+  int max_finished_jobs = int(api::kMaxFinishedJobs.fallback);
+  int64_t max_finished_mb = api::kMaxFinishedMb.fallback;       // images kept by finished jobs
+  int max_event_streams = int(api::kMaxEventStreams.fallback);  // concurrent GET .../events streams
   // Connections (server/http_transport.hpp).
-  int max_connections = 1024;            // open at once; more are refused with 503
-  int max_connections_per_client = 512;  // open at once from one client address; more are refused with 503
-  int header_timeout_s = 10;             // for a request line and its headers to arrive (else 408)
-  int io_timeout_s = 30;                 // longest wait of a body read or a response write
-  int keep_alive_timeout_s = 5;          // idle time before a keep-alive connection is closed
+  int max_connections = int(api::kMaxConnections.fallback);
+  int max_connections_per_client = int(api::kMaxConnectionsPerClient.fallback);
+  int header_timeout_s = int(api::kHeaderTimeoutS.fallback);
+  int io_timeout_s = int(api::kIoTimeoutS.fallback);
+  int keep_alive_timeout_s = int(api::kKeepAliveTimeoutS.fallback);
   // Lifecycle: what survives a restart, and how a stop ends the work in flight.
   std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
   bool resume_interrupted = false;                       // resume interrupted renders at start
-  int shutdown_grace_s = 10;  // on SIGTERM/SIGINT, time for running renders to finish their pass
+  int shutdown_grace_s = int(api::kShutdownGraceS.fallback);
 };
 
 // Parses argv over `defaults`. Returns nullopt after printing --help or --version (exit 0); throws

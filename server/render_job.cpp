@@ -151,7 +151,7 @@ bool RenderJob::run() {
                s.height, s.spp, s.max_depth, request_.envmap,
                request_.preset ? "preset " + *request_.preset
                                : std::to_string(request_.scene.objects.size()) + " objects",
-               api::lighting_mode_name(request_.lighting.mode));
+               enum_name(request_.lighting.mode));
   auto release = [this](const char* how) {
     envmap_.reset();
     spdlog::info("render {} {} after {:.2f} s ({} spp done)", id(), how, elapsed_s(), spp_done());
@@ -198,7 +198,7 @@ void RenderJob::describe(nlohmann::json& out) const {
   out["envmap"] = request_.envmap;
   out["scene"] = request_.preset ? nlohmann::json{{"preset", *request_.preset}}
                                  : nlohmann::json{{"objects", request_.scene.objects.size()}};
-  out["lighting_mode"] = api::lighting_mode_name(request_.lighting.mode);
+  out["lighting_mode"] = enum_name(request_.lighting.mode);
   out["samples"] = stats_.samples;
   out["rays"] = stats_.rays;
   out["samples_per_s"] = render_s_ > 0 ? double(stats_.samples) / render_s_ : 0.0;

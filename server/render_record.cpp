@@ -20,7 +20,7 @@ nlohmann::json record_json(const RenderRecord& r) {
           {"id", r.id},
           {"created_ms", to_ms(r.created)},
           {"request", r.request},
-          {"status", status_name(r.status)},
+          {"status", enum_name(r.status)},
           {"error", r.error ? nlohmann::json{{"code", r.error->code}, {"message", r.error->message}}
                             : nlohmann::json()},
           {"spp_done", r.spp_done},
@@ -39,7 +39,7 @@ RenderRecord parse_render_record(const nlohmann::json& j) {
   r.created = Clock::time_point(std::chrono::milliseconds(j.at("created_ms").get<int64_t>()));
   r.request = j.at("request");
   if (!r.request.is_object()) throw std::invalid_argument("the request is not an object");
-  const auto status = parse_status(j.at("status").get<std::string>());
+  const auto status = parse_enum<JobStatus>(j.at("status").get<std::string>());
   if (!status) throw std::invalid_argument("unknown status");
   r.status = *status;
   if (const auto& e = j.at("error"); !e.is_null())

@@ -12,16 +12,10 @@
 
 namespace lp::server {
 
-api::RenderLimits render_limits(const Options& o) {
-  return {o.max_render_width,  o.max_render_height,  o.max_render_spp,
-          o.max_render_depth,  o.max_render_objects, int(std::min<int64_t>(o.max_lights, 1 << 30)),
-          o.max_mesh_triangles};
-}
-
 int64_t resolve_meshes(render::SceneDesc& scene, const Options& options) {
   int64_t triangles = 0;
   render::MeshLimits limits;
-  limits.max_triangles = options.max_mesh_triangles;
+  limits.max_triangles = options.limits.max_mesh_triangles;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;

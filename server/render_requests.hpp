@@ -8,8 +8,6 @@
 
 namespace lp::server {
 
-api::RenderLimits render_limits(const Options& options);
-
 // Mesh paths are relative to --data-dir and must stay inside it, and the files must pass the OBJ
 // pre-scan (engine/render/obj_prescan.hpp). Every problem is a 400 naming the field. Returns the
 // triangles of all the scene's meshes.

@@ -18,9 +18,9 @@ api::Json metadata(const EnvMapEntry& e) {
 }
 
 InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
-  return *parse_invalid_pixel_policy(api::query_enum(req.params, "invalid",
-                                                     invalid_pixel_policy_name(kDefaultInvalidPixelPolicy),
-                                                     invalid_pixel_policy_names()));
+  return *parse_enum<InvalidPixelPolicy>(api::query_enum(req.params, "invalid",
+                                                     enum_name(kDefaultInvalidPixelPolicy),
+                                                     enum_names<InvalidPixelPolicy>()));
 }
 
 // A JSON body (load by path) must say so; anything else is an image upload.
@@ -62,7 +62,7 @@ void image(App& app, const httplib::Request& req, httplib::Response& res) {
   const Image& pixels = entry->map->image();
   auto memory =
       app.memory.reserve(encode_bytes(preview.format, pixels.width(), pixels.height()), MemoryUse::Transient,
-                         std::string("encoding a map as ") + format_name(preview.format));
+                         std::string("encoding a map as ") + enum_name(preview.format));
   send_reserved(res, write_image(pixels, preview.format, preview.tone), format_mime_type(preview.format),
                 std::move(memory));
 }
@@ -70,7 +70,7 @@ void image(App& app, const httplib::Request& req, httplib::Response& res) {
 void distribution(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
   const auto mode =
-      *parse_luminance_mode(api::query_enum(req.params, "luminance", "average", {"average", "rec709"}));
+      *parse_enum<LuminanceMode>(api::query_enum(req.params, "luminance", "average", {"average", "rec709"}));
   const bool sin_weight = api::query_bool(req.params, "sin_weight", true);
   send_json(res, api::distribution_json(*entry->map, mode, sin_weight));
 }

@@ -14,7 +14,7 @@ namespace {
 void median_cut(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto start = std::chrono::steady_clock::now();
   const auto entry = app.envmaps.get(path_param(req, 1));
-  const MedianCutParams params = api::parse_median_cut_request(req.body, app.options.max_lights);
+  const MedianCutParams params = api::parse_median_cut_request(req.body, app.options.limits);
   api::check_count_fits(params, entry->map->image().pixel_count());
   bool cached = false;
   const auto result = median_cut_cached(*entry->map, params, &cached);
@@ -25,7 +25,7 @@ void median_cut(App& app, const httplib::Request& req, httplib::Response& res) {
 
 void median_cut_png(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
-  const auto r = api::parse_median_cut_image_query(req.params, app.options.max_lights);
+  const auto r = api::parse_median_cut_image_query(req.params, app.options.limits);
   api::check_count_fits(r.params, entry->map->image().pixel_count());
   const auto result = median_cut_cached(*entry->map, r.params);
   const int64_t w = entry->map->width(), h = entry->map->height();

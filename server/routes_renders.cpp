@@ -45,7 +45,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   RenderRecord record;
   record.id = app.renders.new_id();
   record.request = api::parse_json_object(req.body);
-  auto request = api::parse_render_request(record.request, render_limits(app.options));
+  auto request = api::parse_render_request(record.request, app.options.limits);
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
@@ -87,11 +87,11 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   if (!current.image)
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
-        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), status_name(job->status())));
+        fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
   const Image& pixels = *current.image;
   auto memory =
       app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
-                         std::string("encoding a render as ") + format_name(params.format));
+                         std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("Cache-Control", "no-store");
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
   send_reserved(res, write_image(pixels, params.format, params.tone), format_mime_type(params.format),

@@ -25,7 +25,7 @@ struct SampleStream {
 
 std::string json_prologue(const api::SampleRequest& r) {
   return fmt::format(R"({{"count":{},"seed":{},"strategy":"{}","luminance":"{}","samples":[)", r.spec.count,
-                     r.spec.seed, strategy_name(r.spec.strategy), luminance_mode_name(r.luminance));
+                     r.spec.seed, enum_name(r.spec.strategy), enum_name(r.luminance));
 }
 
 // Produces the next chunk of the response body; false when there is nothing left.
@@ -52,7 +52,7 @@ bool next_chunk(SampleStream& s, std::string& out) {
 void samples(App& app, const httplib::Request& req, httplib::Response& res) {
   auto stream = std::make_shared<SampleStream>();
   stream->entry = app.envmaps.get(path_param(req, 1));
-  stream->request = api::parse_sample_request(api::parse_json_object(req.body), app.options.max_samples);
+  stream->request = api::parse_sample_request(api::parse_json_object(req.body), app.options.limits);
   stream->sampler = stream->entry->map->sampler(stream->request.luminance);
   stream->binary = req.get_header_value("Accept").find("application/octet-stream") != std::string::npos;
   if (stream->binary) {
@@ -83,7 +83,7 @@ void samples(App& app, const httplib::Request& req, httplib::Response& res) {
 
 void samples_png(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
-  const auto r = api::parse_sample_image_query(req.params, app.options.max_samples);
+  const auto r = api::parse_sample_image_query(req.params, app.options.limits);
   const auto sampler = entry->map->sampler(r.samples.luminance);
   const int64_t w = entry->map->width(), h = entry->map->height();
   const int64_t drawing =

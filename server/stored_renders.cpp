@@ -34,7 +34,7 @@ std::shared_ptr<const Image> read_record_image(const StateStore& store, const Re
 }
 
 std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
-  const auto request = api::parse_render_request(record.request, render_limits(app.options));
+  const auto request = api::parse_render_request(record.request, app.options.limits);
   const JobStatus status = is_finished(record.status) ? record.status : JobStatus::Interrupted;
   // The image stays with the job, so it is held from the budget like a finished render's.
   MemoryReservation memory;
@@ -105,12 +105,12 @@ void restore_renders(App& app) {
 std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
   if (job->status() != JobStatus::Interrupted)
     throw cannot_resume(*job, api::ErrorCode::NotInterrupted,
-                        fmt::format("it is {}; only interrupted renders resume", status_name(job->status())));
+                        fmt::format("it is {}; only interrupted renders resume", enum_name(job->status())));
   RenderRecord record = job->record();
   api::RenderRequest request;
   int64_t triangles = 0;
   try {
-    request = api::parse_render_request(record.request, render_limits(app.options));
+    request = api::parse_render_request(record.request, app.options.limits);
     triangles = resolve_meshes(request.scene, app.options);
   } catch (const api::ApiError& e) {
     throw cannot_resume(*job, api::ErrorCode::CannotResume, e.what());

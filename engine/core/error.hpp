@@ -20,10 +20,16 @@ enum class ErrorKind {
 class Error : public std::runtime_error {
  public:
   Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  // An invalid parameter: `field` is its path in the structs validated ("ior", "camera.fov_deg").
+  Error(ErrorKind kind, std::string field, const std::string& problem)
+      : std::runtime_error(field + " " + problem), kind_(kind), field_(std::move(field)), problem_(problem) {}
   ErrorKind kind() const { return kind_; }
+  const std::string& field() const { return field_; }      // empty unless a parameter is at fault
+  const std::string& problem() const { return problem_; }  // the message without the field
 
  private:
   ErrorKind kind_;
+  std::string field_, problem_;
 };
 
 }  // namespace lp

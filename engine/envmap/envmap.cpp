@@ -58,7 +58,7 @@ Rgb EnvMap::radiance(latlong::Uv uv) const {
 Rgb EnvMap::radiance(Vec3 direction) const { return radiance(latlong::uv(direction)); }
 
 std::shared_ptr<const EnvMapSampler> EnvMap::sampler(LuminanceMode mode) const {
-  return derived<EnvMapSampler>(std::string("sampler:") + luminance_mode_name(mode),
+  return derived<EnvMapSampler>(std::string("sampler:") + enum_name(mode),
                                 EnvMapSampler::memory_bytes(width(), height()),
                                 [&] { return std::make_shared<const EnvMapSampler>(*this, mode); });
 }

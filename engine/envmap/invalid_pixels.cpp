@@ -32,20 +32,6 @@ const char* problem(float v) {
 
 }  // namespace
 
-const char* invalid_pixel_policy_name(InvalidPixelPolicy p) {
-  return kInvalidPixelPolicyNames[size_t(p)];
-}
-
-std::optional<InvalidPixelPolicy> parse_invalid_pixel_policy(std::string_view name) {
-  for (size_t i = 0; i < kInvalidPixelPolicyNames.size(); ++i)
-    if (name == kInvalidPixelPolicyNames[i]) return InvalidPixelPolicy(i);
-  return std::nullopt;
-}
-
-std::vector<std::string> invalid_pixel_policy_names() {
-  return {kInvalidPixelPolicyNames.begin(), kInvalidPixelPolicyNames.end()};
-}
-
 InvalidPixelReport sanitize_radiance(Image& image, InvalidPixelPolicy policy) {
   InvalidPixelReport report;
   const auto data = image.data();

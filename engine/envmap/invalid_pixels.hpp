@@ -9,18 +9,18 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/core/enum_table.hpp"
 #include "engine/image/image.hpp"
 
 namespace lp {
 
 // clamp: negative channel values become 0 and invalid pixels black; reject: the first bad pixel is an error.
 enum class InvalidPixelPolicy { Clamp, Reject };
-inline constexpr std::array<const char*, 2> kInvalidPixelPolicyNames = {"clamp", "reject"};
+constexpr auto enum_entries(InvalidPixelPolicy) {
+  return std::to_array<EnumEntry<InvalidPixelPolicy>>(
+      {{InvalidPixelPolicy::Clamp, "clamp"}, {InvalidPixelPolicy::Reject, "reject"}});
+}
 inline constexpr InvalidPixelPolicy kDefaultInvalidPixelPolicy = InvalidPixelPolicy::Clamp;
-
-const char* invalid_pixel_policy_name(InvalidPixelPolicy p);
-std::optional<InvalidPixelPolicy> parse_invalid_pixel_policy(std::string_view name);
-std::vector<std::string> invalid_pixel_policy_names();
 
 // The largest channel value a map may hold. Real maps stay far below (the sun's disc is about 1.6e9
 // cd/m2); above it, sums and ratios derived from the map (power, sampling weights over up to 2^32

@@ -1,7 +1,5 @@
 #pragma once
-#include <optional>
-#include <string_view>
-
+#include "engine/core/enum_table.hpp"
 #include "engine/core/vec3.hpp"
 
 namespace lp {
@@ -20,14 +18,9 @@ inline float luminance(Rgb c, LuminanceMode mode) {
   return float(kRec709Weights.r) * c.x + float(kRec709Weights.g) * c.y + float(kRec709Weights.b) * c.z;
 }
 
-inline const char* luminance_mode_name(LuminanceMode m) {
-  return m == LuminanceMode::Average ? "average" : "rec709";
-}
-
-inline std::optional<LuminanceMode> parse_luminance_mode(std::string_view s) {
-  if (s == "average") return LuminanceMode::Average;
-  if (s == "rec709") return LuminanceMode::Rec709;
-  return std::nullopt;
+constexpr auto enum_entries(LuminanceMode) {
+  return std::to_array<EnumEntry<LuminanceMode>>(
+      {{LuminanceMode::Average, "average"}, {LuminanceMode::Rec709, "rec709"}});
 }
 
 }  // namespace lp

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "engine/core/error.hpp"
+#include "engine/core/validate.hpp"
 #include "engine/fresnel/angles.hpp"
 #include "engine/fresnel/conductor.hpp"
 #include "engine/fresnel/dielectric.hpp"
@@ -12,7 +13,7 @@
 namespace lp {
 
 std::vector<double> table_angles_deg(double step) {
-  if (!(step > 0 && step <= 90)) throw Error(ErrorKind::InvalidArgument, "step must be in (0, 90] degrees");
+  require_in("step", step, limits::kFresnelStepDeg);
   constexpr double kSnap = 1e9;  // 1e-9 degree
   std::vector<double> angles;
   for (int64_t i = 0;; ++i) {

@@ -10,7 +10,7 @@ namespace lp {
 
 // 0, step, 2 step, ... below 90, then 90 itself (so the last gap is shorter when step does not divide
 // 90). Angles are rounded to 1e-9 degree, so step 0.1 gives 0.3 and not 0.30000000000000004.
-// Throws lp::Error(InvalidArgument) unless 0 < step <= 90.
+// Throws lp::Error(InvalidArgument) for a step outside limits::kFresnelStepDeg.
 std::vector<double> table_angles_deg(double step);
 
 struct DielectricTable {

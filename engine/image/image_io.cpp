@@ -9,26 +9,6 @@
 
 namespace lp {
 
-const char* format_name(ImageFormat f) {
-  switch (f) {
-    case ImageFormat::Exr:
-      return "exr";
-    case ImageFormat::Pfm:
-      return "pfm";
-    case ImageFormat::Hdr:
-      return "hdr";
-    case ImageFormat::Png:
-      return "png";
-  }
-  return "?";
-}
-
-std::optional<ImageFormat> parse_format(const std::string& name) {
-  for (ImageFormat f : {ImageFormat::Exr, ImageFormat::Pfm, ImageFormat::Hdr, ImageFormat::Png})
-    if (name == format_name(f)) return f;
-  return std::nullopt;
-}
-
 const char* format_mime_type(ImageFormat f) {
   switch (f) {
     case ImageFormat::Exr:

@@ -10,19 +10,25 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/enum_table.hpp"
+#include "engine/core/limits.hpp"
 #include "engine/image/image.hpp"
 
 namespace lp {
 
 enum class ImageFormat { Exr, Pfm, Hdr, Png };
 
-const char* format_name(ImageFormat f);                  // "exr", "pfm", "hdr", "png"
-std::optional<ImageFormat> parse_format(const std::string& name);  // inverse of format_name
+constexpr auto enum_entries(ImageFormat) {
+  return std::to_array<EnumEntry<ImageFormat>>({{ImageFormat::Png, "png"},
+                                                {ImageFormat::Exr, "exr"},
+                                                {ImageFormat::Pfm, "pfm"},
+                                                {ImageFormat::Hdr, "hdr"}});
+}
 const char* format_mime_type(ImageFormat f);
 
 struct ImageLimits {
-  int64_t max_pixels = int64_t{8192} * 8192;
-  int max_dimension = 65536;
+  int64_t max_pixels = limits::kDefaultMaxImagePixels;
+  int max_dimension = limits::kMaxImageDimension;
   // Called with the size of the image a reader is about to allocate, once its size passed the checks
   // (perhaps more than once for one image); it may throw to refuse the allocation (a memory budget).
   std::function<void(int64_t width, int64_t height)> before_allocation;
@@ -52,7 +58,8 @@ struct ToneMap {
 };
 
 enum class ExrCompression { Zip, None };  // None: several times faster to write, for noisy images
-std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression = ExrCompression::Zip);  // float RGB
+std::vector<uint8_t> write_exr(const Image& image,
+                               ExrCompression compression = ExrCompression::Zip);  // float RGB
 std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
 std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
 std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB

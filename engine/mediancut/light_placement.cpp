@@ -118,24 +118,6 @@ RegionSums sum_region(const Image& image, const Region& r, const std::vector<dou
 
 }  // namespace
 
-const char* light_placement_name(LightPlacement p) {
-  switch (p) {
-    case LightPlacement::Centroid:
-      return "centroid";
-    case LightPlacement::CentroidSquared:
-      return "centroid_squared";
-    case LightPlacement::Center:
-      return "center";
-  }
-  return "centroid";
-}
-
-std::optional<LightPlacement> parse_light_placement(std::string_view s) {
-  for (auto p : {LightPlacement::Centroid, LightPlacement::CentroidSquared, LightPlacement::Center})
-    if (s == light_placement_name(p)) return p;
-  return std::nullopt;
-}
-
 double power_luminance(const Power& p, LuminanceMode mode) {
   return mode == LuminanceMode::Average ? (p[0] + p[1] + p[2]) / 3.0 : luminance_weights(mode)(p.data());
 }

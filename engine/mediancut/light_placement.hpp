@@ -19,18 +19,21 @@ enum class LightPlacement {
   Center,           // the region's geometric centre
 };
 
-const char* light_placement_name(LightPlacement p);  // "centroid", "centroid_squared", "center"
-std::optional<LightPlacement> parse_light_placement(std::string_view s);
+constexpr auto enum_entries(LightPlacement) {
+  return std::to_array<EnumEntry<LightPlacement>>({{LightPlacement::Centroid, "centroid"},
+                                                   {LightPlacement::CentroidSquared, "centroid_squared"},
+                                                   {LightPlacement::Center, "center"}});
+}
 
 using Power = std::array<double, 3>;  // RGB, double so that sums over millions of pixels stay exact
 
 struct MedianCutLight {
-  Vec3 direction;           // unit, world z-up
+  Vec3 direction;                // unit, world z-up
   int pixel_x = 0, pixel_y = 0;  // the pixel containing the placement point
-  double u = 0, v = 0;      // the placement point in [0, 1]^2
+  double u = 0, v = 0;           // the placement point in [0, 1]^2
   Region region;
-  Power power{};            // sum over the region of radiance * pixel solid angle
-  double energy = 0;        // luminance of `power` in the luminance mode
+  Power power{};      // sum over the region of radiance * pixel solid angle
+  double energy = 0;  // luminance of `power` in the luminance mode
 };
 
 double power_luminance(const Power& p, LuminanceMode mode);

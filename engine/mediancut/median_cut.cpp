@@ -5,23 +5,19 @@
 #include <algorithm>
 #include <chrono>
 
+#include "engine/core/validate.hpp"
 #include "engine/mediancut/subdivision.hpp"
 
 namespace lp {
 
-const char* split_rule_name(SplitRule r) {
-  return r == SplitRule::Median ? "median" : "variance";
-}
-
-std::optional<SplitRule> parse_split_rule(std::string_view s) {
-  if (s == "median") return SplitRule::Median;
-  if (s == "variance") return SplitRule::Variance;
-  return std::nullopt;
+void MedianCutParams::validate(int64_t pixel_count, const std::string& count_field) const {
+  require(count >= 1 && count <= pixel_count, count_field,
+          fmt::format("must be in [1, {}] (the map's pixel count), got {}", pixel_count, count));
 }
 
 std::string MedianCutParams::key() const {
-  return fmt::format("count={};placement={};split={};luminance={}", count, light_placement_name(placement),
-                     split_rule_name(split), luminance_mode_name(luminance));
+  return fmt::format("count={};placement={};split={};luminance={}", count, enum_name(placement),
+                     enum_name(split), enum_name(luminance));
 }
 
 SplitTables build_split_tables(const Image& image, LuminanceMode mode, SplitRule rule) {
@@ -33,7 +29,7 @@ SplitTables build_split_tables(const Image& image, LuminanceMode mode, SplitRule
 }
 
 SplitTables split_tables(const EnvMap& map, LuminanceMode mode, SplitRule rule) {
-  const std::string name = luminance_mode_name(mode);
+  const std::string name = enum_name(mode);
   SplitTables t;
   const int64_t w = map.width(), h = map.height();
   t.weight = map.derived<SummedAreaTable>("sat:" + name, SummedAreaTable::memory_bytes(w, h), [&] {
@@ -47,6 +43,7 @@ SplitTables split_tables(const EnvMap& map, LuminanceMode mode, SplitRule rule) 
 }
 
 MedianCutResult median_cut(const Image& image, const MedianCutParams& params, const SplitTables& tables) {
+  params.validate(image.pixel_count());
   const auto start = std::chrono::steady_clock::now();
   const RegionSplitter splitter(*tables.weight, tables.moments.get(), params.split);
   const auto regions = subdivide(splitter, image.width(), image.height(), params.count);

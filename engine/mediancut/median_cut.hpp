@@ -17,14 +17,14 @@
 
 namespace lp {
 
-const char* split_rule_name(SplitRule r);  // "median", "variance"
-std::optional<SplitRule> parse_split_rule(std::string_view s);
-
 struct MedianCutParams {
   int count = 64;
   LightPlacement placement = LightPlacement::Centroid;
   SplitRule split = SplitRule::Median;
   LuminanceMode luminance = LuminanceMode::Average;
+
+  // count in [1, the map's pixel count], else lp::Error naming `count_field`.
+  void validate(int64_t pixel_count, const std::string& count_field = "count") const;
 
   std::string key()
       const;  // all parameters, e.g. "count=64;placement=centroid;split=median;luminance=average"

@@ -50,13 +50,6 @@ std::vector<uint8_t> plot_lights(const Image& map, const MedianCutResult& result
 
 }  // namespace
 
-const char* median_cut_style_name(MedianCutStyle s) { return s == MedianCutStyle::Regions ? "regions" : "lights"; }
-
-std::optional<MedianCutStyle> parse_median_cut_style(std::string_view s) {
-  if (s == "regions") return MedianCutStyle::Regions;
-  if (s == "lights") return MedianCutStyle::Lights;
-  return std::nullopt;
-}
 
 int median_cut_dot_half_size(int64_t pixel_count, size_t light_count) {
   return pixel_count >= 400 * int64_t(light_count) ? 2 : 1;

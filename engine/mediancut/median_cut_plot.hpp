@@ -19,8 +19,10 @@ namespace lp {
 
 enum class MedianCutStyle { Regions, Lights };
 
-const char* median_cut_style_name(MedianCutStyle s);  // "regions", "lights"
-std::optional<MedianCutStyle> parse_median_cut_style(std::string_view s);
+constexpr auto enum_entries(MedianCutStyle) {
+  return std::to_array<EnumEntry<MedianCutStyle>>(
+      {{MedianCutStyle::Regions, "regions"}, {MedianCutStyle::Lights, "lights"}});
+}
 
 // Upper bound of the memory either picture takes for a width x height map: its 8-bit pixels and the
 // float image the light dots are drawn in.

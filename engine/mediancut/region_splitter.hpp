@@ -7,6 +7,7 @@
 //   by binary search (a half's variance only grows as the half grows).
 #include <utility>
 
+#include "engine/core/enum_table.hpp"
 #include "engine/mediancut/moment_tables.hpp"
 #include "engine/mediancut/region.hpp"
 #include "engine/mediancut/summed_area_table.hpp"
@@ -14,9 +15,14 @@
 namespace lp {
 
 enum class SplitRule { Median, Variance };
+constexpr auto enum_entries(SplitRule) {
+  return std::to_array<EnumEntry<SplitRule>>(
+      {{SplitRule::Median, "median"}, {SplitRule::Variance, "variance"}});
+}
 
 struct Cut {
-  bool vertical = true;  // true: at column `position` (children [x0, p) and [p, x1)); false: at row `position`
+  bool vertical =
+      true;  // true: at column `position` (children [x0, p) and [p, x1)); false: at row `position`
   int position = 0;
 };
 

@@ -5,10 +5,7 @@
 #include <queue>
 #include <utility>
 
-#include <fmt/format.h>
 #include <tbb/parallel_for.h>
-
-#include "engine/core/error.hpp"
 
 namespace lp {
 namespace {
@@ -65,10 +62,6 @@ std::vector<Region> cut_greedily(const RegionSplitter& splitter, std::vector<Reg
 }  // namespace
 
 std::vector<Region> subdivide(const RegionSplitter& splitter, int width, int height, int count) {
-  if (count < 1) throw Error(ErrorKind::InvalidArgument, "the light count must be at least 1");
-  if (int64_t{count} > int64_t{width} * height)
-    throw Error(ErrorKind::InvalidArgument,
-                fmt::format("the light count {} exceeds the map's {} pixels", count, int64_t{width} * height));
   std::vector<Region> regions = {{0, 0, width, height}};
   const auto target = size_t(count);
   if (std::has_single_bit(unsigned(count))) {

@@ -11,7 +11,7 @@
 
 namespace lp {
 
-// Throws lp::Error(InvalidArgument) if count < 1 or count exceeds the number of pixels.
+// count must be in [1, width * height] (MedianCutParams::validate checks it).
 std::vector<Region> subdivide(const RegionSplitter& splitter, int width, int height, int count);
 
 }  // namespace lp

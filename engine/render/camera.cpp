@@ -6,24 +6,13 @@
 #include "engine/core/error.hpp"
 
 namespace lp::render {
-namespace {
-
-void require(bool ok, const char* what) {
-  if (!ok) throw Error(ErrorKind::InvalidArgument, std::string("camera: ") + what);
-}
-
-}  // namespace
 
 PerspectiveCamera::PerspectiveCamera(const Camera& c, int width, int height) {
-  require(width >= 1 && height >= 1, "the image must have at least one pixel");
-  require(finite(c.position) && finite(c.look_at) && finite(c.up), "position, look_at and up must be finite");
-  require(std::isfinite(c.fov_deg) && c.fov_deg > 0 && c.fov_deg < 180, "fov_deg must be in (0, 180)");
-  const Vec3 view = c.look_at - c.position;
-  require(length(view) > 1e-6f, "look_at must differ from position");
-  require(length(c.up) > 1e-6f, "up must not be zero");
-  forward_ = normalize(view);
+  if (width < 1 || height < 1)
+    throw Error(ErrorKind::InvalidArgument, "camera: the image must have at least one pixel");
+  c.validate("camera");
+  forward_ = normalize(c.look_at - c.position);
   const Vec3 side = cross(forward_, normalize(c.up));
-  require(length(side) > 1e-4f, "up must not be parallel to the view direction");
   right_ = normalize(side);
   up_ = cross(right_, forward_);
   origin_ = c.position;

@@ -19,10 +19,6 @@ struct EmbreeScene::Object {
 
 namespace {
 
-void invalid(const std::string& what) {
-  throw Error(ErrorKind::InvalidArgument, what);
-}
-
 // One Embree device for the process: devices are thread-safe and costly to create.
 std::shared_ptr<RTCDeviceTy> shared_device() {
   static const std::shared_ptr<RTCDeviceTy> device = [] {
@@ -91,8 +87,7 @@ void EmbreeScene::attach(RTCGeometry geometry, uint32_t id) {
 }
 
 void EmbreeScene::add_sphere(uint32_t id, const SphereObject& s) {
-  if (!finite(s.center) || !(std::isfinite(s.radius) && s.radius > 0))
-    invalid("sphere: radius must be > 0 and the centre finite");
+  s.validate("sphere");
   objects_[id].kind = Object::Kind::Sphere;
   objects_[id].center = s.center;
   objects_[id].radius = s.radius;
@@ -104,8 +99,7 @@ void EmbreeScene::add_sphere(uint32_t id, const SphereObject& s) {
 }
 
 void EmbreeScene::add_plane(uint32_t id, const PlaneObject& p, float half_size) {
-  if (!finite(p.point) || !finite(p.normal) || !(length(p.normal) > 0))
-    invalid("plane: the normal must be non-zero and the point finite");
+  p.validate("plane");
   const Frame frame = Frame::from_normal(normalize(p.normal));
   objects_[id].kind = Object::Kind::Plane;
   objects_[id].center = p.point;

@@ -28,15 +28,6 @@ namespace lp::render {
 namespace {
 
 inline constexpr int kTileSize = 16;
-inline constexpr int kMaxDepthLimit = 1024;
-
-void check_settings(const RenderSettings& s, const Lighting& l) {
-  auto invalid = [](const std::string& what) { throw Error(ErrorKind::InvalidArgument, what); };
-  if (s.width < 1 || s.height < 1) invalid("settings: width and height must be >= 1");
-  if (s.max_depth < 0 || s.max_depth > kMaxDepthLimit) invalid("settings: max_depth must be in [0, 1024]");
-  const bool median_cut = l.mode == LightingMode::MedianCut || l.mode == LightingMode::MedianCutAll;
-  if (median_cut && l.lights < 1) invalid("lighting: lights must be >= 1");
-}
 
 std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
   std::vector<std::unique_ptr<Bsdf>> out;
@@ -119,7 +110,9 @@ struct Renderer::Impl {
 
 Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
                    std::shared_ptr<const EnvMap> envmap) {
-  check_settings(settings, lighting);
+  scene.validate("scene");
+  lighting.validate("lighting");
+  settings.validate("settings");
   impl_ = std::make_unique<Impl>(scene, lighting, settings, std::move(envmap));
 }
 

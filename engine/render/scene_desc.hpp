@@ -7,32 +7,62 @@
 #include <variant>
 #include <vector>
 
+#include "engine/core/enum_table.hpp"
+#include "engine/core/limits.hpp"
 #include "engine/core/vec3.hpp"
 
 namespace lp::render {
 
-struct DiffuseMaterial { Rgb albedo{0.8f, 0.8f, 0.8f}; };
-struct MirrorMaterial { Rgb color{1, 1, 1}; };
-struct DielectricMaterial { float ior = 1.5f; };
-struct PlasticMaterial { Rgb albedo{0.5f, 0.5f, 0.5f}; float ior = 1.5f; float roughness = 0.1f; };
+// Every parameter struct's validate(prefix) throws lp::Error(InvalidArgument) naming the first field out of
+// its range (engine/core/limits.hpp) by its path under `prefix`, e.g. "scene.objects[2].material.ior".
+struct DiffuseMaterial {
+  Rgb albedo{0.8f, 0.8f, 0.8f};
+  void validate(const std::string& prefix) const;
+};
+struct MirrorMaterial {
+  Rgb color{1, 1, 1};
+  void validate(const std::string& prefix) const;
+};
+struct DielectricMaterial {
+  float ior = 1.5f;
+  void validate(const std::string& prefix) const;
+};
+struct PlasticMaterial {
+  Rgb albedo{0.5f, 0.5f, 0.5f};
+  float ior = 1.5f;
+  float roughness = 0.1f;
+  void validate(const std::string& prefix) const;
+};
 struct ConductorMaterial {
   Rgb eta{0.2f, 0.4f, 1.4f};  // filled from a preset (e.g. "gold") by the parser, or given
   Rgb k{3.6f, 2.4f, 1.8f};
-  float roughness = 0.0f;     // GGX alpha; 0 = smooth
+  float roughness = 0.0f;  // GGX alpha; 0 = smooth
+  void validate(const std::string& prefix) const;
 };
-using Material = std::variant<DiffuseMaterial, MirrorMaterial, DielectricMaterial, PlasticMaterial, ConductorMaterial>;
+using Material =
+    std::variant<DiffuseMaterial, MirrorMaterial, DielectricMaterial, PlasticMaterial, ConductorMaterial>;
 
-struct SphereObject { Vec3 center; float radius = 1; };
-struct PlaneObject { Vec3 point; Vec3 normal{0, 0, 1}; };
+struct SphereObject {
+  Vec3 center;
+  float radius = 1;
+  void validate(const std::string& prefix) const;
+};
+struct PlaneObject {
+  Vec3 point;
+  Vec3 normal{0, 0, 1};  // any length but 0
+  void validate(const std::string& prefix) const;
+};
 struct MeshObject {
   std::filesystem::path path;  // already resolved and checked to be inside the data dir
   Vec3 translate;
   float scale = 1;
-  Vec3 rotate_deg;             // rotations about x, then y, then z
+  Vec3 rotate_deg;  // rotations about x, then y, then z
+  void validate(const std::string& prefix) const;
 };
 struct SceneObject {
   std::variant<SphereObject, PlaneObject, MeshObject> shape;
   Material material;
+  void validate(const std::string& prefix) const;
 };
 
 struct Camera {
@@ -40,35 +70,46 @@ struct Camera {
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 0, 1};
   float fov_deg = 40;
+  void validate(const std::string& prefix) const;  // also: look_at away from position, up not along the view
 };
 
 struct SceneDesc {
   Camera camera;
   std::vector<SceneObject> objects;
+  void validate(const std::string& prefix) const;
 };
 
 enum class LightingMode { EnvMap, Uniform, Bsdf, MedianCut, MedianCutAll };
+constexpr auto enum_entries(LightingMode) {
+  return std::to_array<EnumEntry<LightingMode>>({{LightingMode::EnvMap, "envmap"},
+                                                 {LightingMode::Uniform, "uniform"},
+                                                 {LightingMode::Bsdf, "bsdf"},
+                                                 {LightingMode::MedianCut, "median_cut"},
+                                                 {LightingMode::MedianCutAll, "median_cut_all"}});
+}
 
 struct Lighting {
   LightingMode mode = LightingMode::EnvMap;
-  int lights = 64;            // median-cut light count
-  float rotation_deg = 0;     // about z
+  int lights = 64;         // median-cut light count
+  float rotation_deg = 0;  // about z
   float intensity = 1;
-  bool visible = true;        // the camera sees the map
+  bool visible = true;  // the camera sees the map
+  void validate(const std::string& prefix) const;
 };
 
 // Limits on mesh files, checked while loading (lp::Error TooLarge when over).
 struct MeshLimits {
-  int64_t max_triangles = 2'000'000;
-  int64_t max_file_bytes = int64_t{256} << 20;
+  int64_t max_triangles = limits::kDefaultMaxMeshTriangles;
+  int64_t max_file_bytes = limits::kMaxMeshFileBytes;
 };
 
 struct RenderSettings {
   int width = 256, height = 256;
   int spp = 64;
-  int max_depth = 8;      // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
+  int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
   MeshLimits mesh_limits;
+  void validate(const std::string& prefix) const;
 };
 
 // Presets named in the API: "sphere", "materials", "furnace".

@@ -10,24 +10,6 @@
 
 namespace lp {
 
-const char* strategy_name(SampleStrategy s) {
-  switch (s) {
-    case SampleStrategy::Independent:
-      return "independent";
-    case SampleStrategy::Stratified:
-      return "stratified";
-    case SampleStrategy::Sobol:
-      return "sobol";
-  }
-  return "?";
-}
-
-std::optional<SampleStrategy> parse_strategy(std::string_view name) {
-  for (auto s : {SampleStrategy::Independent, SampleStrategy::Stratified, SampleStrategy::Sobol})
-    if (name == strategy_name(s)) return s;
-  return std::nullopt;
-}
-
 // N points in ny = round(sqrt(N)) bands of u2; band j holds n_j = N/ny or N/ny + 1 cells of width
 // 1/n_j, and is n_j/N high, so every cell has area exactly 1/N (unbiased with equal weights).
 Point2 stratified_point(uint64_t count, uint64_t seed, uint64_t index) {

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "engine/core/point2.hpp"
+#include "engine/core/enum_table.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 
 namespace lp {
@@ -18,8 +19,11 @@ enum class SampleStrategy {
   Sobol,        // Owen-scrambled Sobol points through the inverse CDF
 };
 
-const char* strategy_name(SampleStrategy s);
-std::optional<SampleStrategy> parse_strategy(std::string_view name);
+constexpr auto enum_entries(SampleStrategy) {
+  return std::to_array<EnumEntry<SampleStrategy>>({{SampleStrategy::Independent, "independent"},
+                                                   {SampleStrategy::Stratified, "stratified"},
+                                                   {SampleStrategy::Sobol, "sobol"}});
+}
 
 struct SampleSetSpec {
   SampleStrategy strategy = SampleStrategy::Independent;

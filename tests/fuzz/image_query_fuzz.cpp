@@ -5,7 +5,6 @@
 #include "api/preview_params.hpp"
 #include "api/sample_request.hpp"
 #include "fuzz_input.hpp"
-#include "server/options.hpp"
 
 namespace {
 
@@ -22,9 +21,9 @@ void parse(const Parse& parse_query) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const lp::api::Query q = lp::fuzz::as_query(lp::fuzz::as_text(data, size));
-  const lp::server::Options defaults;
-  parse([&] { lp::api::parse_sample_image_query(q, defaults.max_samples); });
-  parse([&] { lp::api::parse_median_cut_image_query(q, defaults.max_lights); });
+  const lp::api::RequestLimits limits;
+  parse([&] { lp::api::parse_sample_image_query(q, limits); });
+  parse([&] { lp::api::parse_median_cut_image_query(q, limits); });
   parse([&] { lp::api::parse_preview_params(q); });
   return 0;
 }

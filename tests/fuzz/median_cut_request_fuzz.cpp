@@ -2,11 +2,10 @@
 // fuzz-dictionary: json.dict
 #include "api/median_cut_request.hpp"
 #include "fuzz_input.hpp"
-#include "server/options.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
-    lp::api::parse_median_cut_request(lp::fuzz::as_text(data, size), lp::server::Options{}.max_lights);
+    lp::api::parse_median_cut_request(lp::fuzz::as_text(data, size), lp::api::RequestLimits{});
   } catch (const lp::api::ApiError& e) {
     lp::fuzz::check_rejection(e);
   }

@@ -6,7 +6,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     lp::api::parse_render_request(lp::api::parse_json_object(lp::fuzz::as_text(data, size)),
-                                  lp::api::RenderLimits{});
+                                  lp::api::RequestLimits{});
   } catch (const lp::api::ApiError& e) {
     lp::fuzz::check_rejection(e);
   }

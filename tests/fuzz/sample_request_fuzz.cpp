@@ -2,12 +2,11 @@
 // fuzz-dictionary: json.dict
 #include "api/sample_request.hpp"
 #include "fuzz_input.hpp"
-#include "server/options.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     lp::api::parse_sample_request(lp::api::parse_json_object(lp::fuzz::as_text(data, size)),
-                                  lp::server::Options{}.max_samples);
+                                  lp::api::RequestLimits{});
   } catch (const lp::api::ApiError& e) {
     lp::fuzz::check_rejection(e);
   }

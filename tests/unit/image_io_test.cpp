@@ -53,7 +53,7 @@ TEST(ImageIo, RealMapsLoadAtTheirSize) {
     const DecodedImage d = read_image_file(test::envmap_path(file));
     EXPECT_EQ(d.image.width(), 1024) << file;
     EXPECT_EQ(d.image.height(), 512) << file;
-    EXPECT_EQ(format_name(d.format), file.substr(file.size() - 3)) << file;
+    EXPECT_EQ(enum_name(d.format), file.substr(file.size() - 3)) << file;
     for (float v : d.image.data()) ASSERT_TRUE(std::isfinite(v)) << file;
   }
 }

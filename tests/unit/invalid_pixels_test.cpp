@@ -126,10 +126,10 @@ TEST(InvalidPixels, TinyValuesGiveFiniteDensities) {
 }
 
 TEST(InvalidPixels, PolicyNamesRoundTrip) {
-  for (const std::string& name : invalid_pixel_policy_names())
-    EXPECT_EQ(invalid_pixel_policy_name(*parse_invalid_pixel_policy(name)), name);
-  EXPECT_FALSE(parse_invalid_pixel_policy("zero"));
-  EXPECT_EQ(invalid_pixel_policy_name(kDefaultInvalidPixelPolicy), std::string("clamp"));
+  for (const std::string& name : enum_names<InvalidPixelPolicy>())
+    EXPECT_EQ(enum_name(*parse_enum<InvalidPixelPolicy>(name)), name);
+  EXPECT_FALSE(parse_enum<InvalidPixelPolicy>("zero"));
+  EXPECT_EQ(enum_name(kDefaultInvalidPixelPolicy), std::string("clamp"));
 }
 
 }  // namespace

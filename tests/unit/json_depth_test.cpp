@@ -65,7 +65,9 @@ TEST(JsonDepth, OtherBadBodiesKeepTheirCodes) {
 // The message about a wrong value quotes at most a short excerpt of it.
 std::string sample_rejection(const std::string& body) {
   try {
-    parse_sample_request(parse_json_object(body), 1000);
+    RequestLimits limits;
+    limits.max_samples = 1000;
+    parse_sample_request(parse_json_object(body), limits);
   } catch (const ApiError& e) {
     return e.what();
   }

@@ -62,8 +62,8 @@ TEST_F(Quadrants, LightsAreDotsOnBlackScaledToTheBrightest) {
 
 TEST(MedianCutPlot, StyleNamesRoundTrip) {
   for (auto s : {MedianCutStyle::Regions, MedianCutStyle::Lights})
-    EXPECT_EQ(parse_median_cut_style(median_cut_style_name(s)), s);
-  EXPECT_FALSE(parse_median_cut_style("dots"));
+    EXPECT_EQ(parse_enum<MedianCutStyle>(enum_name(s)), s);
+  EXPECT_FALSE(parse_enum<MedianCutStyle>("dots"));
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST(MedianCutRealMaps, LightPowersAddUpToTheMapPower) {
           for (const auto& l : r.lights)
             for (int c = 0; c < 3; ++c) sum[c] += l.power[c];
           EXPECT_LT(relative_error(sum, map.power()), 1e-5)
-              << file << " " << light_placement_name(placement) << " " << split_rule_name(split) << " " << count;
+              << file << " " << enum_name(placement) << " " << enum_name(split) << " " << count;
         }
   }
 }

@@ -1,12 +1,19 @@
 // Parsing of median-cut requests and the JSON text of a result.
+#include "api/median_cut_request.hpp"
+
 #include <gtest/gtest.h>
 
 #include "api/api_error.hpp"
-#include "api/median_cut_request.hpp"
 #include "api/median_cut_schema.hpp"
 
 namespace lp::api {
 namespace {
+
+RequestLimits lights(int64_t max) {
+  RequestLimits limits;
+  limits.max_lights = max;
+  return limits;
+}
 
 std::string field_of(const std::function<void()>& f) {
   try {
@@ -20,14 +27,15 @@ std::string field_of(const std::function<void()>& f) {
 
 TEST(MedianCutRequest, EmptyBodyMeansDefaults) {
   for (const char* body : {"", "  \n", "{}"}) {
-    const MedianCutParams p = parse_median_cut_request(body, 65536);
+    const MedianCutParams p = parse_median_cut_request(body, RequestLimits{});
     EXPECT_EQ(p.count, 64);
     EXPECT_EQ(p.placement, LightPlacement::Centroid);
     EXPECT_EQ(p.split, SplitRule::Median);
     EXPECT_EQ(p.luminance, LuminanceMode::Average);
   }
   const MedianCutParams p = parse_median_cut_request(
-      R"({"count":100,"placement":"centroid_squared","split":"variance","luminance":"rec709"})", 65536);
+      R"({"count":100,"placement":"centroid_squared","split":"variance","luminance":"rec709"})",
+      RequestLimits{});
   EXPECT_EQ(p.count, 100);
   EXPECT_EQ(p.placement, LightPlacement::CentroidSquared);
   EXPECT_EQ(p.split, SplitRule::Variance);
@@ -35,26 +43,36 @@ TEST(MedianCutRequest, EmptyBodyMeansDefaults) {
 }
 
 TEST(MedianCutRequest, BadFieldsAreNamed) {
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":0})", 10); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":11})", 10); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":1.5})", 10); }).find("'count'"), std::string::npos);
-  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"placement":"x"})", 10); }).find("'placement'"),
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":0})", lights(10)); }).find("'count'"),
             std::string::npos);
-  EXPECT_NE(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":9})", 10), 8); }).find("'count'"),
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":11})", lights(10)); }).find("'count'"),
             std::string::npos);
-  EXPECT_EQ(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":8})", 10), 8); }), "accepted");
+  EXPECT_NE(field_of([] { parse_median_cut_request(R"({"count":1.5})", lights(10)); }).find("'count'"),
+            std::string::npos);
+  EXPECT_NE(
+      field_of([] { parse_median_cut_request(R"({"placement":"x"})", lights(10)); }).find("'placement'"),
+      std::string::npos);
+  EXPECT_NE(field_of([] {
+              check_count_fits(parse_median_cut_request(R"({"count":9})", lights(10)), 8);
+            }).find("'count'"),
+            std::string::npos);
+  EXPECT_EQ(field_of([] { check_count_fits(parse_median_cut_request(R"({"count":8})", lights(10)), 8); }),
+            "accepted");
 }
 
 TEST(MedianCutRequest, ImageQuery) {
-  const Query q = {{"count", "16"}, {"style", "lights"}, {"split", "variance"}, {"exposure", "-2"}, {"gamma", "2.2"}};
-  const MedianCutImageRequest r = parse_median_cut_image_query(q, 65536);
+  const Query q = {
+      {"count", "16"}, {"style", "lights"}, {"split", "variance"}, {"exposure", "-2"}, {"gamma", "2.2"}};
+  const MedianCutImageRequest r = parse_median_cut_image_query(q, RequestLimits{});
   EXPECT_EQ(r.params.count, 16);
   EXPECT_EQ(r.params.split, SplitRule::Variance);
   EXPECT_EQ(r.style, MedianCutStyle::Lights);
   EXPECT_EQ(r.tone.exposure, -2.0f);
   EXPECT_EQ(r.tone.gamma, 2.2f);
-  EXPECT_EQ(parse_median_cut_image_query({}, 65536).style, MedianCutStyle::Regions);
-  EXPECT_NE(field_of([] { parse_median_cut_image_query({{"style", "dots"}}, 10); }).find("'style'"),
+  EXPECT_EQ(parse_median_cut_image_query({}, RequestLimits{}).style, MedianCutStyle::Regions);
+  EXPECT_NE(field_of([] {
+              parse_median_cut_image_query({{"style", "dots"}}, lights(10));
+            }).find("'style'"),
             std::string::npos);
 }
 

@@ -67,7 +67,7 @@ TEST(MedianCut, RegionsPartitionTheMapForAnyCount) {
   const EnvMap map = make_map(128, 64, [](int x, int y) { return smooth_sky(x, y, 128, 64); });
   for (SplitRule split : {SplitRule::Median, SplitRule::Variance})
     for (int count : {1, 2, 3, 7, 64, 100, 256, 1000}) {
-      SCOPED_TRACE(testing::Message() << "count " << count << " split " << split_rule_name(split));
+      SCOPED_TRACE(testing::Message() << "count " << count << " split " << enum_name(split));
       const auto r = median_cut(map, params(count, LightPlacement::Centroid, split));
       EXPECT_EQ(r.lights.size(), size_t(count));
       expect_partition(r, 128, 64);
@@ -140,7 +140,7 @@ TEST(MedianCut, OneBrightPixelGetsALightCarryingAllThePower) {
       for (auto split : {SplitRule::Median, SplitRule::Variance})
         for (int count : {1, 2, 64, 100, 256}) {
           SCOPED_TRACE(testing::Message() << "pixel " << px << "," << py << " count " << count << " "
-                                          << light_placement_name(placement) << " " << split_rule_name(split));
+                                          << enum_name(placement) << " " << enum_name(split));
           const auto r = median_cut(map, params(count, placement, split));
           int lit = 0;
           for (const auto& l : r.lights) {
@@ -283,10 +283,10 @@ TEST(MedianCut, ResultsAreCachedPerParameters) {
 
 TEST(MedianCut, ParameterNamesRoundTrip) {
   for (auto p : {LightPlacement::Centroid, LightPlacement::CentroidSquared, LightPlacement::Center})
-    EXPECT_EQ(parse_light_placement(light_placement_name(p)), p);
-  for (auto s : {SplitRule::Median, SplitRule::Variance}) EXPECT_EQ(parse_split_rule(split_rule_name(s)), s);
-  EXPECT_FALSE(parse_light_placement("centre"));
-  EXPECT_FALSE(parse_split_rule("mean"));
+    EXPECT_EQ(parse_enum<LightPlacement>(enum_name(p)), p);
+  for (auto s : {SplitRule::Median, SplitRule::Variance}) EXPECT_EQ(parse_enum<SplitRule>(enum_name(s)), s);
+  EXPECT_FALSE(parse_enum<LightPlacement>("centre"));
+  EXPECT_FALSE(parse_enum<SplitRule>("mean"));
   EXPECT_EQ(params(64).key(), "count=64;placement=centroid;split=median;luminance=average");
 }
 

@@ -13,12 +13,12 @@ namespace {
 
 using namespace lp::render;
 
-RenderRequest parse(const std::string& body, const RenderLimits& limits = {}) {
+RenderRequest parse(const std::string& body, const RequestLimits& limits = {}) {
   return parse_render_request(Json::parse(body), limits);
 }
 
 // The body must fail with 400 invalid_field naming exactly `field`.
-void expect_field_error(const std::string& body, const std::string& field, const RenderLimits& limits = {}) {
+void expect_field_error(const std::string& body, const std::string& field, const RequestLimits& limits = {}) {
   SCOPED_TRACE(body);
   try {
     parse(body, limits);
@@ -130,17 +130,17 @@ TEST(RenderRequest, EveryLightingModeParses) {
   for (const auto& [name, mode] : modes) {
     const auto r = parse(std::string(R"({"envmap":"e","lighting":{"mode":")") + name + R"("}})");
     EXPECT_EQ(r.lighting.mode, mode) << name;
-    EXPECT_STREQ(lighting_mode_name(mode), name);
+    EXPECT_STREQ(enum_name(mode), name);
   }
 }
 
 TEST(RenderRequest, LimitsComeFromTheServer) {
-  RenderLimits limits;
-  limits.max_width = 100;
-  limits.max_height = 50;
-  limits.max_spp = 16;
-  limits.max_depth = 3;
-  limits.max_objects = 2;
+  RequestLimits limits;
+  limits.max_render_width = 100;
+  limits.max_render_height = 50;
+  limits.max_render_spp = 16;
+  limits.max_render_depth = 3;
+  limits.max_render_objects = 2;
   limits.max_lights = 8;
   limits.max_mesh_triangles = 1234;
   const auto r = parse(R"({"envmap":"e"})", limits);

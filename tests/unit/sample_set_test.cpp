@@ -28,10 +28,10 @@ TEST(SampleSet, SameSeedSameSamplesDifferentSeedDifferentSamples) {
     const auto a = draw(strategy, 5000, 42), b = draw(strategy, 5000, 42), c = draw(strategy, 5000, 43);
     int differing = 0;
     for (size_t i = 0; i < a.size(); ++i) {
-      ASSERT_TRUE(same(a[i], b[i])) << strategy_name(strategy) << " " << i;
+      ASSERT_TRUE(same(a[i], b[i])) << enum_name(strategy) << " " << i;
       differing += !same(a[i], c[i]);
     }
-    EXPECT_GT(differing, 4900) << strategy_name(strategy);
+    EXPECT_GT(differing, 4900) << enum_name(strategy);
   }
 }
 
@@ -39,8 +39,7 @@ TEST(SampleSet, ChunksReproduceTheWholeSet) {
   for (auto strategy : {SampleStrategy::Independent, SampleStrategy::Stratified, SampleStrategy::Sobol}) {
     const auto whole = draw(strategy, 1000, 9);
     const auto part = draw(strategy, 1000, 9, 600, 400);
-    for (size_t i = 0; i < part.size(); ++i)
-      ASSERT_TRUE(same(part[i], whole[600 + i])) << strategy_name(strategy);
+    for (size_t i = 0; i < part.size(); ++i) ASSERT_TRUE(same(part[i], whole[600 + i])) << enum_name(strategy);
   }
 }
 
@@ -84,10 +83,10 @@ TEST(SampleSet, SobolPrefixesAreZeroNets) {
 }
 
 TEST(SampleSet, StrategiesParseByName) {
-  EXPECT_EQ(parse_strategy("sobol"), SampleStrategy::Sobol);
-  EXPECT_EQ(parse_strategy("stratified"), SampleStrategy::Stratified);
-  EXPECT_EQ(parse_strategy("independent"), SampleStrategy::Independent);
-  EXPECT_FALSE(parse_strategy("halton"));
+  EXPECT_EQ(parse_enum<SampleStrategy>("sobol"), SampleStrategy::Sobol);
+  EXPECT_EQ(parse_enum<SampleStrategy>("stratified"), SampleStrategy::Stratified);
+  EXPECT_EQ(parse_enum<SampleStrategy>("independent"), SampleStrategy::Independent);
+  EXPECT_FALSE(parse_enum<SampleStrategy>("halton"));
 }
 
 }  // namespace

@@ -1,0 +1,193 @@
+#include "api/parameters.hpp"
+
+#include <fmt/format.h>
+
+#include "api/fresnel_request.hpp"
+#include "api/sample_request.hpp"
+#include "engine/envmap/invalid_pixels.hpp"
+#include "engine/mediancut/median_cut_plot.hpp"
+#include "engine/render/scene_desc.hpp"
+#include "engine/sampling/sample_set.hpp"
+
+namespace lp::api {
+namespace {
+
+using Location = std::vector<std::string>;
+using Doc = DocumentedParameter;
+
+Location query(const std::string& path, const std::string& method, const std::string& name) {
+  return {"paths", path, method, "parameters", "name=" + name, "schema"};
+}
+Location body(const std::string& path, const std::string& name) {
+  return {"paths", path, "post", "requestBody", "content", "application/json", "schema", "properties", name};
+}
+Location schema(const std::string& name, std::initializer_list<std::string> keys) {
+  Location l = {"components", "schemas", name};
+  l.insert(l.end(), keys);
+  return l;
+}
+
+template <class E>
+Doc enum_doc(Location location, std::optional<E> fallback) {
+  return {std::move(location),
+          enum_names<E>(),
+          {},
+          {},
+          fallback ? std::optional<std::string>(enum_name(*fallback)) : std::nullopt};
+}
+
+std::optional<std::string> number_text(std::optional<double> v) {
+  return v ? std::optional<std::string>(fmt::format("{}", *v)) : std::nullopt;
+}
+
+template <class T>
+Doc range_doc(Location location, Range<T> range, std::optional<double> fallback = std::nullopt) {
+  return {std::move(location), {}, double(range.min), double(range.max), number_text(fallback)};
+}
+
+// A field whose upper bound is a server flag: the document states only the lower bound.
+Doc lower_bound_doc(Location location, double minimum, std::optional<double> fallback) {
+  return {std::move(location), {}, minimum, std::nullopt, number_text(fallback)};
+}
+
+Doc field_doc(Location location, const NumberField& f) {
+  return range_doc(std::move(location), f.range, f.fallback);
+}
+
+void add_enum_parameters(std::vector<Doc>& d) {
+  const std::string samples = "/api/v1/envmaps/{id}/samples", cut = "/api/v1/envmaps/{id}/median-cut";
+  d.push_back(
+      enum_doc(query("/api/v1/envmaps", "post", "invalid"), std::optional(kDefaultInvalidPixelPolicy)));
+  d.push_back(
+      enum_doc({"components", "parameters", "Luminance", "schema"}, std::optional(LuminanceMode::Average)));
+  d.push_back(
+      enum_doc({"components", "parameters", "ImageFormat", "schema"}, std::optional(ImageFormat::Png)));
+  d.push_back(enum_doc(body(samples, "strategy"), std::optional(SampleStrategy::Independent)));
+  d.push_back(enum_doc(body(samples, "luminance"), std::optional(LuminanceMode::Average)));
+  d.push_back(
+      enum_doc(query(samples + ".png", "get", "strategy"), std::optional(SampleStrategy::Independent)));
+  d.push_back(enum_doc(query(samples + ".png", "get", "style"), std::optional(SampleImageStyle::Marks)));
+  d.push_back(enum_doc(body(cut, "placement"), std::optional(LightPlacement::Centroid)));
+  d.push_back(enum_doc(body(cut, "split"), std::optional(SplitRule::Median)));
+  d.push_back(enum_doc(body(cut, "luminance"), std::optional(LuminanceMode::Average)));
+  d.push_back(enum_doc(query(cut + ".png", "get", "placement"), std::optional(LightPlacement::Centroid)));
+  d.push_back(enum_doc(query(cut + ".png", "get", "split"), std::optional(SplitRule::Median)));
+  d.push_back(enum_doc(query(cut + ".png", "get", "style"), std::optional(MedianCutStyle::Regions)));
+  d.push_back(enum_doc(query("/api/v1/fresnel", "get", "format"), std::optional(TableFormat::JsonDocument)));
+  d.push_back({query("/api/v1/fresnel", "get", "metal"), metal_names(), {}, {}, {}});
+  d.push_back({schema("RenderMaterial", {"oneOf", "type=conductor", "properties", "metal"}),
+               metal_names(),
+               {},
+               {},
+               {}});
+  d.push_back(enum_doc(schema("RenderLighting", {"properties", "mode"}),
+                       std::optional(render::LightingMode::EnvMap)));
+}
+
+void add_request_ranges(std::vector<Doc>& d) {
+  const std::string samples = "/api/v1/envmaps/{id}/samples", cut = "/api/v1/envmaps/{id}/median-cut";
+  d.push_back(lower_bound_doc(body(samples, "count"), kSampleCount.range.min, kSampleCount.fallback));
+  d.push_back(lower_bound_doc(body(samples, "seed"), kSampleSeed.range.min, kSampleSeed.fallback));
+  d.push_back(lower_bound_doc(query(samples + ".png", "get", "count"), kSampleImageCount.range.min,
+                              kSampleImageCount.fallback));
+  d.push_back(
+      lower_bound_doc(query(samples + ".png", "get", "seed"), kSampleSeed.range.min, kSampleSeed.fallback));
+  d.push_back(lower_bound_doc(body(cut, "count"), kLightCount.range.min, kLightCount.fallback));
+  d.push_back(
+      lower_bound_doc(query(cut + ".png", "get", "count"), kLightCount.range.min, kLightCount.fallback));
+  d.push_back(field_doc({"components", "parameters", "Exposure", "schema"}, kExposure));
+  d.push_back(field_doc({"components", "parameters", "Gamma", "schema"}, kGamma));
+  const std::string fresnel = "/api/v1/fresnel";
+  d.push_back(range_doc(query(fresnel, "get", "eta_i"), limits::kFresnelIndex, 1.0));
+  d.push_back(range_doc(query(fresnel, "get", "eta_t"), limits::kFresnelIndex));
+  d.push_back(range_doc(query(fresnel, "get", "eta"), limits::kFresnelIndex));
+  d.push_back(range_doc(query(fresnel, "get", "k"), limits::kFresnelExtinction));
+  d.push_back(field_doc(query(fresnel, "get", "step"), kFresnelStep));
+}
+
+void add_render_ranges(std::vector<Doc>& d) {
+  using namespace limits;
+  const render::RenderSettings settings;
+  const render::Lighting lighting;
+  const render::Camera camera;
+  const auto request = [](const std::string& name) { return schema("RenderRequest", {"properties", name}); };
+  d.push_back(lower_bound_doc(request("width"), 1, settings.width));
+  d.push_back(lower_bound_doc(request("height"), 1, settings.height));
+  d.push_back(lower_bound_doc(request("spp"), 1, settings.spp));
+  d.push_back(lower_bound_doc(request("max_depth"), double(kMaxDepth.min), settings.max_depth));
+  d.push_back(lower_bound_doc(request("seed"), 0, double(settings.seed)));
+  d.push_back(range_doc(schema("RenderCamera", {"properties", "fov_deg"}), kFovDeg, camera.fov_deg));
+  d.push_back(range_doc(schema("Vec3", {"items"}), kCoordinate));
+  d.push_back(range_doc(schema("RenderColor", {"oneOf", "0"}), kReflectance));
+  d.push_back(range_doc(schema("RenderObject", {"oneOf", "type=sphere", "properties", "radius"}), kSize));
+  const Location transform = {"oneOf", "type=mesh", "properties", "transform", "properties"};
+  auto mesh = [&](const std::string& name) {
+    Location l = schema("RenderObject", {});
+    l.insert(l.end(), transform.begin(), transform.end());
+    l.push_back(name);
+    return l;
+  };
+  d.push_back(range_doc(mesh("scale"), kSize, 1.0));
+  Location rotate = mesh("rotate_deg");
+  rotate.push_back("items");
+  d.push_back(range_doc(rotate, kRotationDeg));
+  const auto material = [](const std::string& type, const std::string& name) {
+    return schema("RenderMaterial", {"oneOf", "type=" + type, "properties", name});
+  };
+  d.push_back(range_doc(material("dielectric", "ior"), kIor, render::DielectricMaterial{}.ior));
+  d.push_back(range_doc(material("plastic", "ior"), kIor, render::PlasticMaterial{}.ior));
+  d.push_back(range_doc(material("plastic", "roughness"), kRoughness, render::PlasticMaterial{}.roughness));
+  d.push_back(
+      range_doc(material("conductor", "roughness"), kRoughness, render::ConductorMaterial{}.roughness));
+  Location eta = material("conductor", "eta"), k = material("conductor", "k");
+  eta.insert(eta.end(), {"oneOf", "0"});
+  k.insert(k.end(), {"oneOf", "0"});
+  d.push_back(range_doc(eta, kConductorEta));
+  d.push_back(range_doc(k, kConductorK));
+  const auto light = [](const std::string& name) { return schema("RenderLighting", {"properties", name}); };
+  d.push_back(lower_bound_doc(light("lights"), 1, lighting.lights));
+  d.push_back(range_doc(light("rotation_deg"), kRotationDeg, lighting.rotation_deg));
+  d.push_back(range_doc(light("intensity"), kIntensity, lighting.intensity));
+}
+
+}  // namespace
+
+const std::vector<const IntParameter*>& int_parameters() {
+  static const std::vector<const IntParameter*> all = {&kPort,
+                                                       &kThreads,
+                                                       &kMaxUploadMb,
+                                                       &kMaxPixels,
+                                                       &kMaxSamples,
+                                                       &kMaxEnvmaps,
+                                                       &kMaxLights,
+                                                       &kMaxMemoryMb,
+                                                       &kMaxRenderWidth,
+                                                       &kMaxRenderHeight,
+                                                       &kMaxRenderSpp,
+                                                       &kMaxRenderDepth,
+                                                       &kMaxRenderObjects,
+                                                       &kMaxMeshTriangles,
+                                                       &kMaxRunningJobs,
+                                                       &kMaxQueuedJobs,
+                                                       &kMaxFinishedJobs,
+                                                       &kMaxFinishedMb,
+                                                       &kMaxEventStreams,
+                                                       &kMaxConnections,
+                                                       &kMaxConnectionsPerClient,
+                                                       &kHeaderTimeoutS,
+                                                       &kIoTimeoutS,
+                                                       &kKeepAliveTimeoutS,
+                                                       &kShutdownGraceS,
+                                                       &kAccessLogSample};
+  return all;
+}
+
+std::vector<DocumentedParameter> documented_parameters() {
+  std::vector<Doc> d;
+  add_enum_parameters(d);
+  add_request_ranges(d);
+  add_render_ranges(d);
+  return d;
+}
+
+}  // namespace lp::api

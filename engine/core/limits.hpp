@@ -1,0 +1,63 @@
+#pragma once
+// The ranges and limits the engine owns. Engine parameter structs validate against them; the API's
+// parsers, messages, server flags and api/openapi.yaml take them from here.
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <string>
+
+namespace lp {
+
+// A closed interval [min, max]; NaN is in no range.
+template <class T>
+struct Range {
+  T min, max;
+  constexpr bool contains(T v) const { return v >= min && v <= max; }
+};
+
+// "must be in [a, b]", the one wording of a range in every error message.
+template <class T>
+std::string range_message(const Range<T>& r) {
+  return fmt::format("must be in [{}, {}]", r.min, r.max);
+}
+
+namespace limits {
+
+// Materials. The index of refraction covers every transparent material renders use (water 1.33,
+// glass 1.5, diamond 2.42) up to silicon and germanium (about 4); above it the dielectric sampling
+// keeps almost nothing but total internal reflection.
+inline constexpr Range<double> kIor{1.0, 4.0};
+inline constexpr Range<double> kReflectance{0.0, 1.0};  // albedo and colour channels
+inline constexpr Range<double> kRoughness{0.0, 1.0};    // GGX alpha
+inline constexpr Range<double> kConductorEta{0.001, 20.0};
+inline constexpr Range<double> kConductorK{0.0, 20.0};
+
+// Scenes: positions, sizes and angles.
+inline constexpr Range<double> kCoordinate{-1e6, 1e6};
+inline constexpr Range<double> kSize{1e-6, 1e6};  // sphere radius, mesh scale
+inline constexpr Range<double> kRotationDeg{-360.0, 360.0};
+inline constexpr Range<double> kFovDeg{1.0, 179.0};  // vertical field of view
+
+// Lighting.
+inline constexpr Range<double> kIntensity{0.0, 1e6};
+
+// Render settings: bounces of a path; a request's limit (--max-render-depth) lies inside.
+inline constexpr Range<int64_t> kMaxDepth{0, 1024};
+
+// Images read from files. The default largest map is an 8K lat-long map (8192 x 4096).
+inline constexpr int64_t kDefaultMaxImagePixels = int64_t{8192} * 4096;
+inline constexpr int kMaxImageDimension = 65536;
+
+// Mesh files.
+inline constexpr int64_t kDefaultMaxMeshTriangles = 2'000'000;
+inline constexpr int64_t kMaxMeshFileBytes = int64_t{256} << 20;
+
+// Fresnel tables: indices of refraction of any medium (the real part of a conductor's too) and the
+// extinction coefficient k span [0.001, 1000] and [0, 1000], far beyond the materials a render uses;
+// the angle step is in degrees.
+inline constexpr Range<double> kFresnelIndex{0.001, 1000.0};
+inline constexpr Range<double> kFresnelExtinction{0.0, 1000.0};
+inline constexpr Range<double> kFresnelStepDeg{0.01, 90.0};
+
+}  // namespace limits
+}  // namespace lp

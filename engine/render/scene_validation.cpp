@@ -1,0 +1,90 @@
+// The validate() of the scene, lighting and settings structs (scene_desc.hpp).
+#include <fmt/format.h>
+
+#include "engine/core/validate.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::render {
+
+using namespace lp::limits;
+
+void DiffuseMaterial::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "albedo"), albedo, kReflectance);
+}
+
+void MirrorMaterial::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "color"), color, kReflectance);
+}
+
+void DielectricMaterial::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "ior"), ior, kIor);
+}
+
+void PlasticMaterial::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "albedo"), albedo, kReflectance);
+  require_in(field_path(prefix, "ior"), ior, kIor);
+  require_in(field_path(prefix, "roughness"), roughness, kRoughness);
+}
+
+void ConductorMaterial::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "eta"), eta, kConductorEta);
+  require_in(field_path(prefix, "k"), k, kConductorK);
+  require_in(field_path(prefix, "roughness"), roughness, kRoughness);
+}
+
+void SphereObject::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "center"), center, kCoordinate);
+  require_in(field_path(prefix, "radius"), radius, kSize);
+}
+
+void PlaneObject::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "point"), point, kCoordinate);
+  require_in(field_path(prefix, "normal"), normal, kCoordinate);
+  require(length(normal) > 1e-9f, field_path(prefix, "normal"), "must not be the zero vector");
+}
+
+void MeshObject::validate(const std::string& prefix) const {
+  require(!path.empty(), field_path(prefix, "path"), "must not be empty");
+  require_in(field_path(prefix, "transform.translate"), translate, kCoordinate);
+  require_in(field_path(prefix, "transform.scale"), scale, kSize);
+  require_in(field_path(prefix, "transform.rotate_deg"), rotate_deg, kRotationDeg);
+}
+
+void SceneObject::validate(const std::string& prefix) const {
+  std::visit([&](const auto& s) { s.validate(prefix); }, shape);
+  std::visit([&](const auto& m) { m.validate(field_path(prefix, "material")); }, material);
+}
+
+void Camera::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "position"), position, kCoordinate);
+  require_in(field_path(prefix, "look_at"), look_at, kCoordinate);
+  require_in(field_path(prefix, "up"), up, kCoordinate);
+  require_in(field_path(prefix, "fov_deg"), fov_deg, kFovDeg);
+  const Vec3 view = look_at - position;
+  require(length(view) > 1e-6f, field_path(prefix, "look_at"),
+          "must differ from " + field_path(prefix, "position"));
+  require(length(up) > 1e-9f, field_path(prefix, "up"), "must not be the zero vector");
+  require(length(cross(normalize(view), normalize(up))) >= 1e-4f, field_path(prefix, "up"),
+          "must not be parallel to the viewing direction (look_at - position)");
+}
+
+void SceneDesc::validate(const std::string& prefix) const {
+  camera.validate(field_path(prefix, "camera"));
+  for (size_t i = 0; i < objects.size(); ++i)
+    objects[i].validate(field_path(prefix, fmt::format("objects[{}]", i)));
+}
+
+void Lighting::validate(const std::string& prefix) const {
+  require(lights >= 1, field_path(prefix, "lights"), fmt::format("must be at least 1, got {}", lights));
+  require_in(field_path(prefix, "rotation_deg"), rotation_deg, kRotationDeg);
+  require_in(field_path(prefix, "intensity"), intensity, kIntensity);
+}
+
+void RenderSettings::validate(const std::string& prefix) const {
+  require(width >= 1, field_path(prefix, "width"), fmt::format("must be at least 1, got {}", width));
+  require(height >= 1, field_path(prefix, "height"), fmt::format("must be at least 1, got {}", height));
+  require(spp >= 1, field_path(prefix, "spp"), fmt::format("must be at least 1, got {}", spp));
+  require_in(field_path(prefix, "max_depth"), max_depth, kMaxDepth);
+}
+
+}  // namespace lp::render

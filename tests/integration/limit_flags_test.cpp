@@ -1,0 +1,111 @@
+// Every limit flag a request can exceed (api::int_parameters() with an exceeded_status) is enforced by the
+// real server: one server runs with each such flag set low, and a request just over each limit gets the
+// declared 4xx with a message naming what was over. A new limit flag without a probe here fails the test.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "api/parameters.hpp"
+#include "support/http_reply.hpp"
+#include "support/server_process.hpp"
+#include "support/test_data.hpp"
+
+namespace lp {
+namespace {
+
+using nlohmann::json;
+using test::Reply;
+
+// The low value of each limit flag, and a request just over it: an upload of a map file, or a JSON body
+// posted to `path`; `named` is a part of the error message.
+struct Probe {
+  std::string value;
+  std::string path;  // empty: upload `file`
+  json body;
+  std::string named;
+  std::string file = "";
+};
+
+Reply send(httplib::Client& c, const Probe& p) {
+  if (!p.path.empty()) return test::reply(c.Post(p.path.c_str(), p.body.dump(), "application/json"));
+  const std::vector<uint8_t> bytes = test::read_bytes(test::envmap_path(p.file));
+  std::string name = p.file;
+  name[name.find('.')] = '_';
+  return test::reply(c.Post(("/api/v1/envmaps?name=" + name).c_str(),
+                            reinterpret_cast<const char*>(bytes.data()), bytes.size(),
+                            "application/octet-stream"));
+}
+
+Probe render(const std::string& value, json fields, const std::string& named) {
+  fields["envmap"] = "default";
+  fields["width"] = fields.value("width", 8);
+  fields["height"] = fields.value("height", 8);
+  fields["spp"] = fields.value("spp", 1);
+  return {value, "/api/v1/renders", fields, named};
+}
+
+std::map<std::string, Probe> probes() {
+  const json sphere = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}};
+  const json mesh = {{"type", "mesh"}, {"path", "grid.obj"}};
+  return {
+      {"max-upload-mb", {"1", "", {}, "large", "forest.pfm"}},
+      {"max-pixels", {"1000", "", {}, "1000", "forest.exr"}},
+      {"max-samples", {"100", "/api/v1/envmaps/default/samples", {{"count", 101}}, "count"}},
+      {"max-lights", {"16", "/api/v1/envmaps/default/median-cut", {{"count", 17}}, "count"}},
+      {"max-render-width", render("32", {{"width", 33}}, "'width'")},
+      {"max-render-height", render("24", {{"height", 25}}, "'height'")},
+      {"max-render-spp", render("4", {{"spp", 5}}, "'spp'")},
+      {"max-render-depth", render("2", {{"max_depth", 3}}, "'max_depth'")},
+      {"max-render-objects", render("1", {{"scene", {{"objects", {sphere, sphere}}}}}, "scene.objects")},
+      {"max-mesh-triangles", render("10", {{"scene", {{"objects", {mesh}}}}}, "scene.objects[0].path")},
+  };
+}
+
+// A data directory holding grid.obj (32 triangles).
+struct DataDir {
+  test::TempDir dir;
+  DataDir() { std::ofstream(dir.path() / "grid.obj") << test::grid_obj(4); }
+  std::string path() const { return dir.path().string(); }
+};
+
+TEST(LimitFlags, EveryLimitARequestCanExceedAnswersItsDeclaredStatus) {
+  const auto all = probes();
+  const DataDir data;
+  std::vector<std::string> flags = {"--data-dir", data.path()};
+  std::vector<const api::IntParameter*> limits;
+  for (const api::IntParameter* p : api::int_parameters()) {
+    if (p->exceeded_status == 0) continue;
+    const auto probe = all.find(p->flag);
+    ASSERT_NE(probe, all.end()) << "--" << p->flag << " has no probe in this test";
+    limits.push_back(p);
+    flags.insert(flags.end(), {std::string("--") + p->flag, probe->second.value});
+  }
+  EXPECT_EQ(limits.size(), all.size()) << "a probe for a flag that declares no exceeded_status";
+  test::ServerProcess server(flags);
+  auto client = server.client();
+  for (const api::IntParameter* p : limits) {
+    const Probe& probe = all.at(p->flag);
+    const Reply r = send(*client, probe);
+    EXPECT_EQ(r.status, p->exceeded_status) << "--" << p->flag << ": " << r.body;
+    EXPECT_NE(r.body.find(probe.named), std::string::npos) << "--" << p->flag << ": " << r.body;
+  }
+  EXPECT_TRUE(server.alive());
+}
+
+// The same requests are accepted under the default limits (so each probe exceeds only its flag).
+TEST(LimitFlags, TheProbesPassUnderTheDefaultLimits) {
+  const DataDir data;
+  test::ServerProcess server({"--data-dir", data.path()});
+  auto client = server.client();
+  for (const auto& [flag, probe] : probes()) {
+    const Reply r = send(*client, probe);
+    EXPECT_TRUE(r.status == 200 || r.status == 201 || r.status == 202)
+        << "--" << flag << ": " << r.status << " " << r.body;
+  }
+}
+
+}  // namespace
+}  // namespace lp
