@@ -7,7 +7,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "support/chi_square.hpp"
 #include "support/real_maps.hpp"
 

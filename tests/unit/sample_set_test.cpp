@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "engine/sampling/sobol_2d.hpp"
 #include "support/real_maps.hpp"
 
