@@ -35,7 +35,7 @@ inline int guide_size(int n, int cells_per_guide) {
   return n / cells_per_guide > 1 ? n / cells_per_guide : 1;
 }
 
-// guide[j] = the cell holding j / g, for j = 0 .. g.
+// guide[j] = the cell holding j / g, for j = 0 .. g (up to rounding, which find() corrects).
 void build_guide(const float* cdf, size_t stride, int n, int g, uint32_t* guide);
 
 // The cell i < n with cdf[i] <= u < cdf[i + 1], skipping zero-width cells (the largest i with
