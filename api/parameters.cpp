@@ -5,9 +5,9 @@
 #include "api/fresnel_request.hpp"
 #include "api/sample_request.hpp"
 #include "engine/envmap/invalid_pixels.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
 #include "engine/render/scene_desc.hpp"
-#include "engine/sampling/sample_set.hpp"
 
 namespace lp::api {
 namespace {

@@ -6,7 +6,7 @@
 #include "api/params.hpp"
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 
 namespace lp::api {
 

@@ -13,7 +13,7 @@
 #include "engine/core/rng.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {

@@ -1,34 +1,35 @@
 #include "engine/envmap/envmap_sampler.hpp"
 
-#include <cmath>
-
 #include <tbb/parallel_for.h>
+
+#include <cmath>
 
 namespace lp {
 namespace {
 
 // Pixel weights: luminance * sin(theta of the row centre), so that p(u, v) is proportional to the
 // radiance per solid angle.
-PiecewiseConstant2D::RowFiller sampling_weights(const Image& image, LuminanceMode mode) {
-  return [&image, mode](int y, float* out) {
-    const auto s = float(std::sin(latlong::row_centre_theta(y, image.height())));
-    const float* row = image.row(y);
-    for (int x = 0; x < image.width(); ++x) out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
-  };
+float row_factor(int y, int height) {
+  return float(std::sin(latlong::row_centre_theta(y, height)));
 }
 
-// Solid-angle pdf from the unit-square density: p / (2 pi^2 sin theta). sin theta is clamped away
-// from zero so that samples at the exact pole give a large finite pdf rather than Inf.
-constexpr float kMinSinTheta = 1e-7f;
-
-float solid_angle_pdf(float density, float theta) {
-  return density / (2.0f * kPiF * kPiF * std::max(std::sin(theta), kMinSinTheta));
+PiecewiseConstant2D::RowFiller sampling_weights(const Image& image, LuminanceMode mode) {
+  return [&image, mode](int y, float* out) {
+    const float s = row_factor(y, image.height());
+    const float* row = image.row(y);
+    for (int x = 0; x < image.width(); ++x)
+      out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
+  };
 }
 
 }  // namespace
 
 EnvMapSampler::EnvMapSampler(const EnvMap& map, LuminanceMode mode)
     : map_(map), mode_(mode), dist_(map.width(), map.height(), sampling_weights(map.image(), mode)) {}
+
+double EnvMapSampler::row_mean_luminance(int y) const {
+  return dist_.row_weight_sums()[size_t(y)] / (double(dist_.width()) * row_factor(y, dist_.height()));
+}
 
 EnvSample EnvMapSampler::finish(const GridSample& g) const {
   EnvSample s;
@@ -42,12 +43,14 @@ EnvSample EnvMapSampler::finish(const GridSample& g) const {
   ::sincosf(s.theta, &sin_theta, &cos_theta);
   ::sincosf(s.phi, &sin_phi, &cos_phi);
   s.direction = {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta};
-  s.pdf = g.density / (2.0f * kPiF * kPiF * std::max(sin_theta, kMinSinTheta));
+  s.pdf = solid_angle_pdf(g.density, sin_theta);
   s.radiance = map_.image().at(g.x, g.y);
   return s;
 }
 
-EnvSample EnvMapSampler::sample(float u1, float u2) const { return finish(dist_.sample(u1, u2)); }
+EnvSample EnvMapSampler::sample(float u1, float u2) const {
+  return finish(dist_.sample(u1, u2));
+}
 
 const AliasTable2D& EnvMapSampler::alias() const {
   std::call_once(alias_once_, [&] { alias_ = std::make_unique<AliasTable2D>(dist_); });
@@ -78,7 +81,7 @@ void EnvMapSampler::sample_alias(std::span<const AliasBits> bits, std::span<EnvS
 float EnvMapSampler::pdf(Vec3 direction) const {
   const latlong::Uv uv = latlong::uv(direction);
   const int x = latlong::pixel_x(uv.u, dist_.width()), y = latlong::pixel_y(uv.v, dist_.height());
-  return solid_angle_pdf(dist_.density(x, y), uv.v * kPiF);
+  return pdf(x, y, std::sin(uv.v * kPiF));
 }
 
 }  // namespace lp

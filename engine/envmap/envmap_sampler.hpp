@@ -1,11 +1,13 @@
 #pragma once
 // Importance sampling of an environment map: pixel weights luminance * sin(theta of the row centre),
 // solid-angle pdf = p(u, v) / (2 pi^2 sin theta) with theta of the sample itself.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <span>
 
+#include "engine/core/constants.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/sampling/alias_table_2d.hpp"
 #include "engine/sampling/piecewise_constant_2d.hpp"
@@ -43,12 +45,26 @@ class EnvMapSampler {
 
   // Solid-angle pdf of a direction; agrees with sample().pdf.
   float pdf(Vec3 direction) const;
+  // The same for a direction already located in pixel (x, y), with its sin(theta).
+  float pdf(int x, int y, float sin_theta) const { return solid_angle_pdf(dist_.density(x, y), sin_theta); }
+  // Starts loading the pdf and radiance of pixel (x, y), for a caller that knows it ahead of its use.
+  void prefetch(int x, int y) const {
+    dist_.prefetch(x, y);
+    __builtin_prefetch(map_.image().row(y) + 3 * x);
+  }
 
+  // The distribution over pixels; its rows' weights are their mean luminance * sin(theta).
   const PiecewiseConstant2D& distribution() const { return dist_; }
+  double row_mean_luminance(int y) const;
   const EnvMap& map() const { return map_; }
   LuminanceMode mode() const { return mode_; }
 
  private:
+  // p / (2 pi^2 sin theta), with sin theta clamped away from zero so that samples at the exact pole
+  // give a large finite pdf rather than Inf.
+  static float solid_angle_pdf(float density, float sin_theta) {
+    return density / (2.0f * kPiF * kPiF * std::max(sin_theta, 1e-7f));
+  }
   EnvSample finish(const GridSample& g) const;
   const AliasTable2D& alias() const;
 

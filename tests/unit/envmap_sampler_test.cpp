@@ -1,13 +1,17 @@
 // The environment-map importance sampler against analytic answers and its own pdf.
-#include <cmath>
-#include <numeric>
+#include "engine/envmap/envmap_sampler.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <tuple>
+#include <vector>
+
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
-#include "engine/envmap/envmap_sampler.hpp"
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "support/chi_square.hpp"
 #include "support/real_maps.hpp"
 
@@ -109,7 +113,8 @@ TEST(EnvMapSampler, OneBrightPixelGivesTheMapPowerForEverySample) {
       const EnvSample s = sampler->sample(rng.uniform_float(), rng.uniform_float());
       ASSERT_EQ(s.pixel_x, 40);
       ASSERT_EQ(s.pixel_y, py);
-      for (int c = 0; c < 3; ++c) ASSERT_NEAR(s.radiance[c] / s.pdf / map.power()[c], 1.0, tolerance) << "row " << py;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(s.radiance[c] / s.pdf / map.power()[c], 1.0, tolerance) << "row " << py;
     }
   }
 }
@@ -152,7 +157,8 @@ std::vector<double> expected_counts(const EnvMapSampler& s, int phi_bins, int co
   std::vector<double> expected(size_t(phi_bins) * cos_bins, 0.0);
   for (int b = 0; b < cos_bins; ++b) {
     // cos theta from 1 (top) down to -1: bin b spans cos in [1 - 2(b+1)/n, 1 - 2b/n].
-    const double v0 = std::acos(1.0 - 2.0 * b / cos_bins) / kPi, v1 = std::acos(1.0 - 2.0 * (b + 1) / cos_bins) / kPi;
+    const double v0 = std::acos(1.0 - 2.0 * b / cos_bins) / kPi,
+                 v1 = std::acos(1.0 - 2.0 * (b + 1) / cos_bins) / kPi;
     for (int y = int(v0 * h); y < std::min(h, int(std::ceil(v1 * h))); ++y) {
       const double ov = std::min(v1, double(y + 1) / h) - std::max(v0, double(y) / h);
       if (ov <= 0) continue;
@@ -179,30 +185,95 @@ test::ChiSquareResult chi_square_of(const EnvMapSampler& s, int n, Draw draw) {
   return test::chi_square_test(observed, expected_counts(s, phi_bins, cos_bins, n));
 }
 
-class ChiSquareOnRealMaps : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(ChiSquareOnRealMaps, InverseCdfSamplerMatchesItsPdf) {
-  const auto sampler = test::real_map(GetParam())->sampler(LuminanceMode::Average);
-  const auto r = chi_square_of(*sampler, 1'000'000, [&](int i) {
-    Rng rng(12345, uint64_t(i));
-    return sampler->sample(rng.uniform_float(), rng.uniform_float());
-  });
-  EXPECT_GT(r.p_value, 0.01) << r.summary();
-  RecordProperty("chi_square", r.summary());
+// The ways a sample set reaches the sampler: independent uniforms, stratified and sobol points
+// through the inverse CDF (its guide tables), and independent sets through the alias table.
+enum class Draw { IndependentInverseCdf, Stratified, Sobol, IndependentAlias };
+const char* draw_name(Draw d) {
+  constexpr const char* kNames[] = {"independent_inverse_cdf", "stratified", "sobol", "independent_alias"};
+  return kNames[int(d)];
 }
 
+std::vector<EnvSample> draw_samples(const EnvMapSampler& sampler, Draw draw, size_t n, uint64_t seed) {
+  std::vector<EnvSample> out(n);
+  if (draw == Draw::IndependentInverseCdf) {
+    for (size_t i = 0; i < n; ++i) {
+      Rng rng(seed, i);
+      out[i] = sampler.sample(rng.uniform_float(), rng.uniform_float());
+    }
+    return out;
+  }
+  const SampleStrategy strategy = draw == Draw::Stratified ? SampleStrategy::Stratified
+                                  : draw == Draw::Sobol    ? SampleStrategy::Sobol
+                                                           : SampleStrategy::Independent;
+  generate_samples(sampler, {strategy, n, seed}, 0, out);
+  return out;
+}
 
-TEST_P(ChiSquareOnRealMaps, AliasSamplerMatchesItsPdf) {
-  const auto sampler = test::real_map(GetParam())->sampler(LuminanceMode::Rec709);
-  std::vector<EnvSample> samples(1'000'000);
-  generate_samples(*sampler, {SampleStrategy::Independent, samples.size(), 99}, 0, samples);
+constexpr Draw kDraws[] = {Draw::IndependentInverseCdf, Draw::Stratified, Draw::Sobol,
+                           Draw::IndependentAlias};
+constexpr LuminanceMode kModes[] = {LuminanceMode::Average, LuminanceMode::Rec709};
+
+using RealMapCase = std::tuple<std::string, LuminanceMode, Draw>;
+class ChiSquareOnRealMaps : public ::testing::TestWithParam<RealMapCase> {};
+
+TEST_P(ChiSquareOnRealMaps, SamplesMatchTheSamplersPdf) {
+  const auto& [name, mode, draw] = GetParam();
+  const auto sampler = test::real_map(name)->sampler(mode);
+  const auto samples = draw_samples(*sampler, draw, 1'000'000, 12345);
   const auto r = chi_square_of(*sampler, int(samples.size()), [&](int i) { return samples[size_t(i)]; });
   EXPECT_GT(r.p_value, 0.01) << r.summary();
   RecordProperty("chi_square", r.summary());
 }
 
-INSTANTIATE_TEST_SUITE_P(RealMaps, ChiSquareOnRealMaps, ::testing::Values("forest.exr", "city.exr", "studio.hdr"),
-                         [](const auto& p) { return p.param.substr(0, p.param.find('.')); });
+std::string real_map_case_name(const ::testing::TestParamInfo<RealMapCase>& info) {
+  const std::string& name = std::get<0>(info.param);
+  return name.substr(0, name.find('.')) + "_" + enum_name(std::get<1>(info.param)) + "_" +
+         draw_name(std::get<2>(info.param));
+}
+
+INSTANTIATE_TEST_SUITE_P(RealMaps, ChiSquareOnRealMaps,
+                         ::testing::Combine(::testing::Values("forest.exr", "city.exr", "studio.hdr"),
+                                            ::testing::ValuesIn(kModes), ::testing::ValuesIn(kDraws)),
+                         real_map_case_name);
+
+// Per pixel, on a small map with a bright spot, black rows and a gradient: the guide tables meet
+// cells of zero width and CDF steps of every size.
+using PerPixelCase = std::tuple<LuminanceMode, Draw>;
+class ChiSquarePerPixel : public ::testing::TestWithParam<PerPixelCase> {};
+
+TEST_P(ChiSquarePerPixel, CountsMatchDensityTimesArea) {
+  const auto& [mode, draw] = GetParam();
+  Image image(64, 32);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const Vec3 d = latlong::direction({(float(x) + 0.5f) / 64.0f, (float(y) + 0.5f) / 32.0f});
+      if (d.z < -0.8f) continue;
+      const float spot = dot(d, normalize(Vec3{1, 1, 0.5f})) > 0.95f ? 40.0f : 0.0f;
+      image.set(x, y, {1.2f + spot + d.z, 0.5f + 0.3f * d.x, 0.1f});
+    }
+  const EnvMap map(std::move(image));
+  const auto sampler = map.sampler(mode);
+  const auto& dist = sampler->distribution();
+  const int w = map.width(), h = map.height();
+  constexpr size_t kN = 200000;
+  std::vector<double> observed(size_t(w * h), 0.0), expected(size_t(w * h), 0.0);
+  for (const EnvSample& s : draw_samples(*sampler, draw, kN, 6)) {
+    const latlong::Uv uv = latlong::uv(s.direction);
+    observed[size_t(latlong::pixel_y(uv.v, h) * w + latlong::pixel_x(uv.u, w))] += 1;
+  }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) expected[size_t(y * w + x)] = kN * double(dist.density(x, y)) / (w * h);
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, 0.01) << r.summary();
+}
+
+std::string per_pixel_case_name(const ::testing::TestParamInfo<PerPixelCase>& info) {
+  return std::string(enum_name(std::get<0>(info.param))) + "_" + draw_name(std::get<1>(info.param));
+}
+
+INSTANTIATE_TEST_SUITE_P(Draws, ChiSquarePerPixel,
+                         ::testing::Combine(::testing::ValuesIn(kModes), ::testing::ValuesIn(kDraws)),
+                         per_pixel_case_name);
 
 // A biased sampler must fail the same test, or the test proves nothing.
 TEST(ChiSquare, DetectsASamplerThatIgnoresSinTheta) {

@@ -1,7 +1,6 @@
 // The renderer's sampling pieces: the per-pixel Sobol sampler keeps the (0,2)-net property of every
-// power-of-two prefix in every dimension pair; the guided environment sampler has EnvMapSampler's
-// pdf and draws from it (chi-square over the map's pixels); the GGX visible-normal sampler matches
-// its density.
+// power-of-two prefix in every dimension pair; the environment light reads back the pdf and
+// radiance of the pixels it samples; the GGX visible-normal sampler matches its density.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,11 +11,9 @@
 #include "engine/core/rng.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/render/env_importance.hpp"
 #include "engine/render/env_light.hpp"
 #include "engine/render/path_sampler.hpp"
 #include "render_test_helpers.hpp"
-#include "support/chi_square.hpp"
 #include "support/test_data.hpp"
 
 namespace lp::render {
@@ -54,51 +51,27 @@ TEST(RenderSampling, EveryDimensionPairIsA02Net) {
   EXPECT_NE(other.get_2d().x, same.get_2d().x);
 }
 
-TEST(RenderSampling, GuidedEnvSamplerHasTheSamplersPdf) {
+TEST(RenderSampling, EnvLightLocatesTheSampledPixelsPdfAndRadiance) {
   const auto map = std::make_shared<const EnvMap>(read_image_file(lp::test::envmap_path("forest.exr")).image);
-  const auto reference = map->sampler(LuminanceMode::Average);
-  const auto guided = EnvImportance::of(*map);
+  const auto reference = map->sampler(kImportanceLuminance);
+  const EnvLight env(map, Lighting{});
   // A direction computed in float may land a rounding error away from its pixel: a neighbouring
   // pixel's pdf and radiance for a few samples in 10^4 at pixel edges.
   Rng rng(3, 4);
   constexpr int kN = 100000;
   int off_pixel = 0;
   for (int i = 0; i < kN; ++i) {
-    const ImportanceSample s = guided->sample(rng.uniform_float(), rng.uniform_float());
+    const LightSample s = env.sample_importance({rng.uniform_float(), rng.uniform_float()});
     ASSERT_NEAR(length(s.direction), 1.0f, 1e-5f);
-    const EnvPixel pixel = guided->locate(s.direction);
-    const float pdf = guided->pdf(pixel);
-    const Rgb l = guided->radiance(pixel);
+    const EnvPixel pixel = env.locate(s.direction);
+    const float pdf = env.importance_pdf(pixel);
+    const Rgb l = env.radiance(pixel);
     ASSERT_NEAR(pdf, reference->pdf(s.direction), 1e-4f * pdf);  // the same function of the direction
     ASSERT_EQ(l, map->radiance(s.direction));
     if (std::abs(pdf - s.pdf) > 1e-4f * s.pdf || !(l == s.radiance)) ++off_pixel;
   }
-  std::printf("guided env sampler: %d of %d samples read back from a neighbouring pixel\n", off_pixel, kN);
+  std::printf("env light: %d of %d samples read back from a neighbouring pixel\n", off_pixel, kN);
   EXPECT_LT(off_pixel, kN / 1000);
-}
-
-TEST(RenderSampling, GuidedEnvSamplerDrawsFromItsPdfChiSquare) {
-  // A small map with a bright spot, zero rows and a gradient: cell counts against N * pdf * area.
-  const auto map = test::make_map(32, [](Vec3 d) {
-    if (d.z < -0.8f) return Rgb{0, 0, 0};
-    const float spot = dot(d, normalize(Vec3{1, 1, 0.5f})) > 0.95f ? 40.0f : 0.0f;
-    return Rgb{1.2f + spot + d.z, 0.5f, 0.1f};
-  });
-  const auto guided = EnvImportance::of(*map);
-  const auto& dist = map->sampler(LuminanceMode::Average)->distribution();
-  const int w = map->width(), h = map->height();
-  constexpr int kN = 200000;
-  std::vector<double> observed(size_t(w * h), 0.0), expected(size_t(w * h), 0.0);
-  Rng rng(5, 6);
-  for (int i = 0; i < kN; ++i) {
-    const ImportanceSample s = guided->sample(rng.uniform_float(), rng.uniform_float());
-    const latlong::Uv uv = latlong::uv(s.direction);
-    observed[size_t(latlong::pixel_y(uv.v, h) * w + latlong::pixel_x(uv.u, w))] += 1;
-  }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) expected[size_t(y * w + x)] = kN * double(dist.density(x, y)) / (w * h);
-  const auto r = lp::test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, 0.01) << r.summary();
 }
 
 TEST(RenderSampling, EnvLightRotationIsConsistent) {

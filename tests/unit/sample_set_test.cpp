@@ -1,5 +1,5 @@
 // Sample sets: reproducible by seed, stratified for any N, low-discrepancy Sobol nets.
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +39,8 @@ TEST(SampleSet, ChunksReproduceTheWholeSet) {
   for (auto strategy : {SampleStrategy::Independent, SampleStrategy::Stratified, SampleStrategy::Sobol}) {
     const auto whole = draw(strategy, 1000, 9);
     const auto part = draw(strategy, 1000, 9, 600, 400);
-    for (size_t i = 0; i < part.size(); ++i) ASSERT_TRUE(same(part[i], whole[600 + i])) << enum_name(strategy);
+    for (size_t i = 0; i < part.size(); ++i)
+      ASSERT_TRUE(same(part[i], whole[600 + i])) << enum_name(strategy);
   }
 }
 

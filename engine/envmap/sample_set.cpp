@@ -1,4 +1,4 @@
-#include "engine/sampling/sample_set.hpp"
+#include "engine/envmap/sample_set.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -7,8 +7,8 @@
 #include <span>
 #include <string_view>
 
-#include "engine/core/point2.hpp"
 #include "engine/core/enum_table.hpp"
+#include "engine/core/point2.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 
 namespace lp {
