@@ -10,6 +10,7 @@
 #include <random>
 
 #include "engine/core/rng.hpp"
+#include "server/render_thread_priority.hpp"
 
 namespace lp::server {
 
@@ -160,6 +161,9 @@ void JobManager::runner_loop(int runner) {
   // Low priority: oneTBB gives its workers to interactive requests (sampling, previews), which run in
   // normal-priority arenas, before the renders.
   tbb::task_arena arena(concurrency, 1, tbb::task_arena::priority::low);
+  arena.initialize();
+  RenderThreadPriority lowered(arena);
+  lower_to_render_priority();
   while (auto job = next_job()) {
     spdlog::debug("runner {} takes job {}", runner, job->id());
     arena.execute([&] { job->execute(); });
