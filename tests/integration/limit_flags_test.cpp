@@ -107,5 +107,17 @@ TEST(LimitFlags, TheProbesPassUnderTheDefaultLimits) {
   }
 }
 
+// --max-envmaps counts the maps held, the built-in one included: 507 until one is deleted.
+TEST(LimitFlags, MaxEnvmapsCountsTheMapsHeld) {
+  test::ServerProcess server({"--max-envmaps", "1"});
+  auto client = server.client();
+  const Probe upload{"", "", {}, "", "forest.pfm"};
+  const Reply refused = send(*client, upload);
+  EXPECT_EQ(refused.status, 507) << refused.body;
+  EXPECT_NE(refused.body.find("maximum number of maps (1)"), std::string::npos) << refused.body;
+  EXPECT_EQ(test::reply(client->Delete("/api/v1/envmaps/default")).status, 204);
+  EXPECT_EQ(send(*client, upload).status, 201);
+}
+
 }  // namespace
 }  // namespace lp

@@ -3,21 +3,19 @@
 // Retry-After), bounded finished jobs, bad fields (400 naming the field), mesh paths outside the data dir,
 // other requests answering while renders run, and SIGTERM with a render running (interrupted).
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <nlohmann/json.hpp>
-
-#include <stb_image.h>
 
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
@@ -52,29 +50,36 @@ const fs::path& data_dir() {
 
 // Default job limits (2 running), the forest map, the test data dir.
 test::ServerProcess& render_server() {
-  static test::ServerProcess server({"--data-dir", data_dir().string(), "--load",
-                                     "forest=" + test::envmap_path("forest.exr").string()});
+  static test::ServerProcess server(
+      {"--data-dir", data_dir().string(), "--load", "forest=" + test::envmap_path("forest.exr").string()});
   return server;
 }
 
 // One runner, one queue slot, two finished jobs kept, tiny meshes only; the built-in "default" map.
 test::ServerProcess& small_server() {
-  static test::ServerProcess server({"--data-dir", data_dir().string(), "--max-running-jobs", "1", "--max-queued-jobs",
-                                     "1", "--max-finished-jobs", "2", "--max-mesh-triangles", "1000"});
+  static test::ServerProcess server({"--data-dir", data_dir().string(), "--max-running-jobs", "1",
+                                     "--max-queued-jobs", "1", "--max-finished-jobs", "2",
+                                     "--max-mesh-triangles", "1000"});
   return server;
 }
 
 using test::reply;
 using test::Reply;
 
-Reply get(const test::ServerProcess& s, const std::string& path) { return reply(s.client()->Get(path.c_str())); }
-Reply del(const test::ServerProcess& s, const std::string& path) { return reply(s.client()->Delete(path.c_str())); }
+Reply get(const test::ServerProcess& s, const std::string& path) {
+  return reply(s.client()->Get(path.c_str()));
+}
+Reply del(const test::ServerProcess& s, const std::string& path) {
+  return reply(s.client()->Delete(path.c_str()));
+}
 Reply post(const test::ServerProcess& s, const std::string& path, const json& body) {
   return reply(s.client()->Post(path.c_str(), body.dump(), "application/json"));
 }
 
-json render_body(const std::string& envmap, int width, int height, int spp, json scene = {{"preset", "sphere"}}) {
-  return {{"envmap", envmap}, {"scene", std::move(scene)}, {"width", width}, {"height", height}, {"spp", spp}};
+json render_body(const std::string& envmap, int width, int height, int spp,
+                 json scene = {{"preset", "sphere"}}) {
+  return {
+      {"envmap", envmap}, {"scene", std::move(scene)}, {"width", width}, {"height", height}, {"spp", spp}};
 }
 
 // POST that must be accepted; returns the job id.
@@ -109,8 +114,12 @@ json poll(const test::ServerProcess& s, const std::string& id, Pred done) {
   return st;
 }
 
-bool finished(const json& st) { return st["status"] == "done" || st["status"] == "failed" || st["status"] == "cancelled"; }
-json wait_finished(const test::ServerProcess& s, const std::string& id) { return poll(s, id, finished); }
+bool finished(const json& st) {
+  return st["status"] == "done" || st["status"] == "failed" || st["status"] == "cancelled";
+}
+json wait_finished(const test::ServerProcess& s, const std::string& id) {
+  return poll(s, id, finished);
+}
 
 // Cancels a (big) render when the test leaves, however it leaves, and waits for it to stop.
 class CancelOnExit {
@@ -174,8 +183,8 @@ TEST(RenderApi, SubmitPollToDoneAndTheImageDecodesInEveryFormat) {
   ASSERT_EQ(png.status, 200) << png.body;
   EXPECT_EQ(png.header("Content-Type"), "image/png");
   int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.body.data()), int(png.body.size()), &w,
-                                          &h, &channels, 3);
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.body.data()),
+                                          int(png.body.size()), &w, &h, &channels, 3);
   ASSERT_NE(pixels, nullptr);
   EXPECT_EQ(w, 32);
   EXPECT_EQ(h, 24);
@@ -211,7 +220,8 @@ TEST(RenderApi, FurnaceRenderThroughTheApiMatchesTheAnalyticValue) {
   ASSERT_EQ(img.width(), 32);
   for (int x : {0, 31})
     for (int y : {0, 31})
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.at(x, y)[c], 1.0f, 1e-5f) << x << "," << y;  // the map itself
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(img.at(x, y)[c], 1.0f, 1e-5f) << x << "," << y;  // the map itself
   // The sphere spans ~11.3 px around the centre (radius 1 at distance 4, 40 degree field); average the
   // ~250 pixels within 9 px. Even sampling only the map (uniform, 2 cos / sample: std 0.65) gives a
   // standard error of 0.65 / sqrt(250 x 512) = 0.0018 for the mean, so 0.01 is over 5 sigma.
@@ -231,7 +241,8 @@ TEST(RenderApi, TheImageIsAvailableWhileRunningAndCancelStopsTheRender) {
   auto& s = render_server();
   const std::string id = submit(s, render_body("forest", 512, 512, 4096));
   CancelOnExit guard(s, id);
-  const json running = poll(s, id, [](const json& st) { return st["status"] == "running" && st["spp_done"] >= 1; });
+  const json running =
+      poll(s, id, [](const json& st) { return st["status"] == "running" && st["spp_done"] >= 1; });
   EXPECT_GT(running["progress"].get<double>(), 0.0);
   EXPECT_LT(running["progress"].get<double>(), 1.0);
 
@@ -267,14 +278,18 @@ std::vector<Event> parse_events(const std::string& text) {
   std::string line;
   Event current;
   while (std::getline(in, line)) {
-    if (line.rfind("event: ", 0) == 0) current.name = line.substr(7);
-    else if (line.rfind("data: ", 0) == 0) current.data = json::parse(line.substr(6));
-    else if (line.empty() && !current.name.empty()) events.push_back(std::exchange(current, {}));
+    if (line.rfind("event: ", 0) == 0)
+      current.name = line.substr(7);
+    else if (line.rfind("data: ", 0) == 0)
+      current.data = json::parse(line.substr(6));
+    else if (line.empty() && !current.name.empty())
+      events.push_back(std::exchange(current, {}));
   }
   return events;
 }
 
-std::string read_stream(const test::ServerProcess& s, const std::string& path, int& status, std::string& type) {
+std::string read_stream(const test::ServerProcess& s, const std::string& path, int& status,
+                        std::string& type) {
   std::string text;
   auto res = s.client()->Get(path.c_str(), [&](const char* data, size_t n) {
     text.append(data, n);
@@ -366,7 +381,8 @@ TEST(RenderApi, OtherRequestsAnswerWhileRendersRun) {
 
   const Reply health = get(s, "/api/v1/health");
   EXPECT_EQ(health.status, 200) << health.body;
-  const auto samples = s.client()->Post("/api/v1/envmaps/forest/samples", json{{"count", 1000}}.dump(), "application/json");
+  const auto samples =
+      s.client()->Post("/api/v1/envmaps/forest/samples", json{{"count", 1000}}.dump(), "application/json");
   ASSERT_TRUE(samples);
   EXPECT_EQ(samples->status, 200);
   EXPECT_EQ(get(s, "/api/v1/envmaps/forest").status, 200);
@@ -420,14 +436,16 @@ TEST(RenderApi, MeshPathsMustStayInsideTheDataDir) {
   EXPECT_EQ(st["status"], "done") << st.dump();
 
   const std::string field = "scene.objects[0].path";
-  for (const std::string& bad : std::vector<std::string>{"../meshes/bunny.obj", "meshes/../../etc/passwd", "/etc/passwd",
+  for (const std::string& bad :
+       std::vector<std::string>{"../meshes/bunny.obj", "meshes/../../etc/passwd", "/etc/passwd",
                                 (test::shared_data() / "meshes" / "bunny.obj").string(), "escape.obj",
                                 "meshes/missing.obj", "meshes"})
     expect_field_error(post(s, "/api/v1/renders", render_body("forest", 32, 32, 2, mesh_scene(bad))), field);
 
   test::ServerProcess no_data_dir;  // without --data-dir no path is accepted
-  expect_field_error(post(no_data_dir, "/api/v1/renders", render_body("default", 32, 32, 2, mesh_scene("meshes/bunny.obj"))),
-                     field);
+  expect_field_error(
+      post(no_data_dir, "/api/v1/renders", render_body("default", 32, 32, 2, mesh_scene("meshes/bunny.obj"))),
+      field);
 }
 
 TEST(RenderQueue, AFullQueueAnswers503WithRetryAfter) {
@@ -463,7 +481,8 @@ TEST(RenderQueue, AFullQueueAnswers503WithRetryAfter) {
 
 TEST(RenderQueue, AMeshOverTheTriangleLimitIsRefusedAtSubmission) {
   auto& s = small_server();  // --max-mesh-triangles 1000
-  const Reply r = post(s, "/api/v1/renders", render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
+  const Reply r =
+      post(s, "/api/v1/renders", render_body("default", 32, 32, 1, mesh_scene("meshes/bunny.obj")));
   EXPECT_EQ(r.status, 400) << r.body;
   EXPECT_NE(r.body.find("scene.objects[0].path"), std::string::npos) << r.body;
   EXPECT_NE(r.body.find("has over 1000 triangles"), std::string::npos) << r.body;
@@ -481,6 +500,18 @@ TEST(RenderQueue, FinishedJobsAreBoundedAndTheOldestDropped) {
   const json all = get(s, "/api/v1/renders").body_json();
   for (const auto& j : all["renders"]) listed.push_back(j["id"]);
   EXPECT_EQ(listed, (std::vector<std::string>{ids[1], ids[2]}));
+}
+
+// --max-finished-mb: a finished 256x256 render keeps 12 B/px (768 KiB), so a second one passes 1 MiB and
+// the oldest is dropped.
+TEST(RenderQueue, FinishedJobsAreBoundedInBytes) {
+  test::ServerProcess s({"--max-finished-mb", "1"});
+  const std::string first = submit(s, render_body("default", 256, 256, 1));
+  EXPECT_EQ(wait_finished(s, first)["status"], "done");
+  const std::string second = submit(s, render_body("default", 256, 256, 1));
+  EXPECT_EQ(wait_finished(s, second)["status"], "done");
+  EXPECT_EQ(get(s, "/api/v1/renders/" + first).status, 404);
+  EXPECT_EQ(get(s, "/api/v1/renders/" + second + "/image?format=exr").status, 200);
 }
 
 TEST(RenderShutdown, SigtermInterruptsARunningRenderAndTheServerExits) {
