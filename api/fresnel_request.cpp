@@ -25,7 +25,7 @@ double number(const Query& q, const std::string& name, std::optional<double> fal
   }
   if (min > 0 && *v <= 0) throw invalid_field(name, fmt::format("{} must be > 0", *v));
   if (*v < min || *v > max)
-    throw invalid_field(name, fmt::format("{}, got {}", range_message(Range{min, max}), *v));
+    throw invalid_field(name, fmt::format("{}, got {}", range_message(Range<double>{min, max}), *v));
   return *v;
 }
 

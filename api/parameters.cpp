@@ -82,6 +82,8 @@ void add_enum_parameters(std::vector<Doc>& d) {
                {}});
   d.push_back(enum_doc(schema("RenderLighting", {"properties", "mode"}),
                        std::optional(render::LightingMode::EnvMap)));
+  d.push_back(
+      enum_doc(schema("RenderScene", {"properties", "preset"}), std::optional<render::ScenePreset>()));
 }
 
 void add_request_ranges(std::vector<Doc>& d) {

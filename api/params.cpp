@@ -28,7 +28,7 @@ double parse_double(const std::string& field, const std::string& text) {
 
 void check_range(const std::string& field, double v, double min, double max) {
   if (v < min || v > max)
-    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range{min, max}), v));
+    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range<double>{min, max}), v));
 }
 
 int64_t parse_int(const std::string& field, const std::string& text) {
@@ -43,7 +43,7 @@ int64_t parse_int(const std::string& field, const std::string& text) {
 
 void check_int_range(const std::string& field, int64_t v, int64_t min, int64_t max) {
   if (v < min || v > max)
-    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range{min, max}), v));
+    throw invalid_field(field, fmt::format("{}, got {}", range_message(Range<int64_t>{min, max}), v));
 }
 
 }  // namespace

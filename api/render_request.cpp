@@ -201,11 +201,9 @@ SceneDesc parse_scene(const Json* s, const RequestLimits& limits, std::optional<
     for (size_t i = 0; i < objects->size(); ++i)
       scene.objects.push_back(parse_object((*objects)[i], fmt::format("scene.objects[{}]", i)));
   } else {
-    preset = json_enum(*s, "preset", "sphere", {"sphere", "materials", "furnace"}, "scene");
-    auto found = scene_preset(*preset);
-    if (!found)
-      throw invalid_field("scene.preset", fmt::format("preset '{}' is not available", excerpt(*preset)));
-    scene = std::move(*found);
+    const auto chosen = json_enum(*s, "preset", render::ScenePreset::Sphere, "scene");
+    preset = enum_name(chosen);
+    scene = render::preset_scene(chosen);
   }
   if (const Json* c = object_member(*s, "camera", "scene")) scene.camera = parse_camera(*c, scene.camera);
   return scene;

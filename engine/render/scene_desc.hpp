@@ -112,7 +112,16 @@ struct RenderSettings {
   void validate(const std::string& prefix) const;
 };
 
-// Presets named in the API: "sphere", "materials", "furnace".
-std::optional<SceneDesc> scene_preset(const std::string& name);
+// The built-in scenes: a diffuse sphere on a plane, a row of materials, a white furnace.
+enum class ScenePreset { Sphere, Materials, Furnace };
+constexpr auto enum_entries(ScenePreset) {
+  return std::to_array<EnumEntry<ScenePreset>>({{ScenePreset::Sphere, "sphere"},
+                                                {ScenePreset::Materials, "materials"},
+                                                {ScenePreset::Furnace, "furnace"}});
+}
+
+SceneDesc preset_scene(ScenePreset preset);
+// The preset of this name, if there is one.
+std::optional<SceneDesc> scene_preset(std::string_view name);
 
 }  // namespace lp::render

@@ -5,7 +5,9 @@
 namespace lp::render {
 namespace {
 
-Camera front_camera() { return {{0, -4, 0}, {0, 0, 0}, {0, 0, 1}, 40}; }
+Camera front_camera() {
+  return {{0, -4, 0}, {0, 0, 0}, {0, 0, 1}, 40};
+}
 
 // The classic light-probe test: a diffuse sphere of albedo 0.8.
 SceneDesc sphere_scene() {
@@ -35,11 +37,22 @@ SceneDesc materials_scene() {
 
 }  // namespace
 
-std::optional<SceneDesc> scene_preset(const std::string& name) {
-  if (name == "sphere") return sphere_scene();
-  if (name == "furnace") return furnace_scene();
-  if (name == "materials") return materials_scene();
-  return std::nullopt;
+SceneDesc preset_scene(ScenePreset preset) {
+  switch (preset) {
+    case ScenePreset::Sphere:
+      return sphere_scene();
+    case ScenePreset::Materials:
+      return materials_scene();
+    case ScenePreset::Furnace:
+      return furnace_scene();
+  }
+  return sphere_scene();
+}
+
+std::optional<SceneDesc> scene_preset(std::string_view name) {
+  const auto preset = parse_enum<ScenePreset>(name);
+  if (!preset) return std::nullopt;
+  return preset_scene(*preset);
 }
 
 }  // namespace lp::render
