@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "api/error_codes.hpp"
 #include "engine/core/limits.hpp"
 
 namespace lp::api {
@@ -22,44 +23,40 @@ struct IntParameter {
   const char* help;
   Owner owner;
   const char* default_text = nullptr;  // --help shows this instead of `fallback` (a computed default)
-  int exceeded_status = 0;             // the answer to a request over this limit, if it is a 4xx
+  std::optional<ErrorCode> exceeded;   // the answer to a request over this limit, if a 4xx
 };
 
 // Limits on requests (the request parsers enforce them).
-inline constexpr IntParameter kMaxPixels{"max-pixels",
-                                         limits::kDefaultMaxImagePixels,
-                                         {1, int64_t{1} << 34},
-                                         "largest map in pixels",
-                                         Owner::Engine,
-                                         nullptr,
-                                         413};
+inline constexpr IntParameter kMaxPixels{"max-pixels",          limits::kDefaultMaxImagePixels,
+                                         {1, int64_t{1} << 34}, "largest map in pixels",
+                                         Owner::Engine,         nullptr,
+                                         ErrorCode::TooLarge};
 inline constexpr IntParameter kMaxSamples{
-    "max-samples", 10'000'000, {1, int64_t{1} << 32}, "most samples per request", Owner::Api, nullptr, 400};
+    "max-samples", 10'000'000, {1, int64_t{1} << 32},  "most samples per request",
+    Owner::Api,    nullptr,    ErrorCode::InvalidField};
 inline constexpr IntParameter kMaxLights{
-    "max-lights", 65536, {1, int64_t{1} << 24}, "most median-cut lights per request", Owner::Api,
-    nullptr,      400};
-inline constexpr IntParameter kMaxRenderWidth{
-    "max-render-width", 4096, {1, 65536}, "widest render in pixels", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderHeight{
-    "max-render-height", 4096, {1, 65536}, "tallest render in pixels", Owner::Api, nullptr, 400};
+    "max-lights", 65536,   {1, int64_t{1} << 24},  "most median-cut lights per request",
+    Owner::Api,   nullptr, ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxRenderWidth{"max-render-width",        4096,       {1, 65536},
+                                              "widest render in pixels", Owner::Api, nullptr,
+                                              ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxRenderHeight{"max-render-height",        4096,       {1, 65536},
+                                               "tallest render in pixels", Owner::Api, nullptr,
+                                               ErrorCode::InvalidField};
 inline constexpr IntParameter kMaxRenderSpp{
-    "max-render-spp", 65536, {1, 1 << 24}, "most samples per pixel of a render", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxRenderDepth{"max-render-depth",
-                                              64,
-                                              limits::kMaxDepth,
-                                              "largest max_depth (path bounces) of a render",
-                                              Owner::Api,
-                                              nullptr,
-                                              400};
+    "max-render-spp", 65536,   {1, 1 << 24},           "most samples per pixel of a render",
+    Owner::Api,       nullptr, ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxRenderDepth{
+    "max-render-depth", 64,      limits::kMaxDepth,      "largest max_depth (path bounces) of a render",
+    Owner::Api,         nullptr, ErrorCode::InvalidField};
 inline constexpr IntParameter kMaxRenderObjects{
-    "max-render-objects", 256, {0, 1 << 20}, "most objects in a render's scene", Owner::Api, nullptr, 400};
-inline constexpr IntParameter kMaxMeshTriangles{"max-mesh-triangles",
-                                                limits::kDefaultMaxMeshTriangles,
-                                                {1, int64_t{1} << 32},
-                                                "most triangles in one mesh of a render",
-                                                Owner::Engine,
-                                                nullptr,
-                                                400};
+    "max-render-objects", 256,     {0, 1 << 20},           "most objects in a render's scene",
+    Owner::Api,           nullptr, ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxMeshTriangles{
+    "max-mesh-triangles",   limits::kDefaultMaxMeshTriangles,
+    {1, int64_t{1} << 32},  "most triangles in one mesh of a render",
+    Owner::Engine,          nullptr,
+    ErrorCode::InvalidField};
 
 // Resources of the server.
 inline constexpr IntParameter kPort{
@@ -67,7 +64,8 @@ inline constexpr IntParameter kPort{
 inline constexpr IntParameter kThreads{"threads",     0,          {1, 1024}, "worker threads for computation",
                                        Owner::Server, "all cores"};
 inline constexpr IntParameter kMaxUploadMb{
-    "max-upload-mb", 512, {1, 1 << 20}, "largest request body in MiB", Owner::Server, nullptr, 413};
+    "max-upload-mb",           512, {1, 1 << 20}, "largest request body in MiB", Owner::Server, nullptr,
+    ErrorCode::PayloadTooLarge};
 inline constexpr IntParameter kMaxEnvmaps{
     "max-envmaps", 64, {1, 100000}, "most maps held at once", Owner::Server};
 inline constexpr IntParameter kMaxMemoryMb{

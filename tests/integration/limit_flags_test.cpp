@@ -1,4 +1,4 @@
-// Every limit flag a request can exceed (api::int_parameters() with an exceeded_status) is enforced by the
+// Every limit flag a request can exceed (api::int_parameters() with an `exceeded` code) is enforced by the
 // real server: one server runs with each such flag set low, and a request just over each limit gets the
 // declared 4xx with a message naming what was over. A new limit flag without a probe here fails the test.
 #include <gtest/gtest.h>
@@ -77,19 +77,21 @@ TEST(LimitFlags, EveryLimitARequestCanExceedAnswersItsDeclaredStatus) {
   std::vector<std::string> flags = {"--data-dir", data.path()};
   std::vector<const api::IntParameter*> limits;
   for (const api::IntParameter* p : api::int_parameters()) {
-    if (p->exceeded_status == 0) continue;
+    if (!p->exceeded) continue;
     const auto probe = all.find(p->flag);
     ASSERT_NE(probe, all.end()) << "--" << p->flag << " has no probe in this test";
     limits.push_back(p);
     flags.insert(flags.end(), {std::string("--") + p->flag, probe->second.value});
   }
-  EXPECT_EQ(limits.size(), all.size()) << "a probe for a flag that declares no exceeded_status";
+  EXPECT_EQ(limits.size(), all.size()) << "a probe for a flag that declares no exceeded code";
   test::ServerProcess server(flags);
   auto client = server.client();
   for (const api::IntParameter* p : limits) {
     const Probe& probe = all.at(p->flag);
     const Reply r = send(*client, probe);
-    EXPECT_EQ(r.status, p->exceeded_status) << "--" << p->flag << ": " << r.body;
+    EXPECT_EQ(r.status, api::http_status(*p->exceeded)) << "--" << p->flag << ": " << r.body;
+    EXPECT_EQ(r.body_json()["error"]["code"], api::code_name(*p->exceeded))
+        << "--" << p->flag << ": " << r.body;
     EXPECT_NE(r.body.find(probe.named), std::string::npos) << "--" << p->flag << ": " << r.body;
   }
   EXPECT_TRUE(server.alive());
