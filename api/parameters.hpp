@@ -22,8 +22,8 @@ struct IntParameter {
   Range<int64_t> range;  // the values the flag accepts
   const char* help;
   Owner owner;
-  const char* default_text = nullptr;  // --help shows this instead of `fallback` (a computed default)
-  std::optional<ErrorCode> exceeded;   // the answer to a request over this limit, if a 4xx
+  const char* default_text = nullptr;   // --help shows this instead of `fallback` (a computed default)
+  std::optional<ErrorCode> exceeded{};  // the answer to a request over this limit, if a 4xx
 };
 
 // Limits on requests (the request parsers enforce them).
