@@ -17,4 +17,8 @@ void check_data_dir(const Options& options);
 std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative,
                                           const std::string& field);
 
+// The same checks inside any folder `root`, which messages call `where` ("the data directory").
+std::filesystem::path resolve_inside(const std::filesystem::path& root, const std::string& relative,
+                                     const std::string& field, const std::string& where);
+
 }  // namespace lp::server
