@@ -125,9 +125,15 @@ StagedAsset::~StagedAsset() {
 }
 
 void StagedAsset::commit() {
-  if (::rename(staging_.c_str(), target_.c_str()) != 0)
+  if (::rename(staging_.c_str(), target_.c_str()) != 0) {
+    if (errno == EEXIST || errno == ENOTEMPTY)
+      throw api::ApiError(api::ErrorCode::Conflict,
+                          "the state directory holds files of an earlier asset named '" +
+                              target_.filename().string() +
+                              "' that could not be restored (see the server's log)");
     throw std::runtime_error("cannot rename " + staging_.string() + " to " + target_.string() + ": " +
                              std::strerror(errno));
+  }
   committed_ = true;
   sync_directory(target_.parent_path());
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Files named in requests (maps, meshes) come only from inside --data-dir.
+// Files named in requests (maps, meshes) come only from inside --data-dir (or, for meshes, an uploaded
+// asset's folder: mesh_paths.hpp).
 #include <filesystem>
 #include <string>
 

@@ -25,6 +25,7 @@ Usage: lightprobe-server [options]
   --cors-origin ORIGIN   an origin (http://host:port, or *) whose pages may call the API (repeatable);
                          without it, requests that change state from another origin get 403
   --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
+                         (mesh paths assets/NAME name uploaded model assets instead)
   --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
   --web-dir DIR          static dashboard served at / (default: the source tree's web/); the API keeps /api
   --state-dir DIR        uploaded maps, model assets and render jobs kept across restarts

@@ -81,7 +81,8 @@ std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& n
   StateStore& store = state_of(app);
   const auto pending = app.assets.hold(name);
   check_upload_size(app, upload.size());
-  // The body is held while it unpacks; the unpacking itself reads and writes through small buffers.
+  // The body is held while it unpacks; the files go to disk through small buffers. (libarchive's index
+  // of a zip's central directory, a few times its size, is not counted: --max-asset-mb bounds it.)
   const auto memory =
       app.memory.reserve(int64_t(upload.size()), MemoryUse::Transient, "unpacking the asset '" + name + "'");
   const ArchiveLimits limits{app.options.max_asset_mb << 20, app.options.max_asset_files};

@@ -174,6 +174,21 @@ TEST(AssetApi, AssetsAreReloadedAtStartAndLeftoversRemoved) {
   EXPECT_EQ(s.finished_render(render.body_json()["id"])["status"], "done");
 }
 
+// A record that cannot be restored keeps its files for the operator, and its name stays taken.
+TEST(AssetApi, AnAssetThatCannotBeRestoredKeepsItsFilesAndName) {
+  AssetServer s;
+  ASSERT_EQ(s.upload("box", test::glb_bytes("{}")).status, 201);
+  s.stop();
+  fs::remove(s.assets_dir() / "box" / "model.glb");
+  s.restart();
+  EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", json::array()}}));
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
+  const Reply r = s.upload("box", test::glb_bytes("{}"));
+  EXPECT_EQ(r.status, 409) << r.body;
+  EXPECT_NE(r.body.find("could not be restored"), std::string::npos) << r.body;
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
+}
+
 TEST(AssetApi, AnUploadedObjRendersToDone) {
   AssetServer s;
   ASSERT_EQ(s.upload("grid", test::make_archive(ArchiveFormat::Zip, textured_obj_in("grid"))).status, 201);
@@ -260,7 +275,8 @@ std::vector<Refusal> refusals() {
        400, "invalid_argument", "model files lie in nested folders: 'a/b/model.obj'"},
       {"not an archive", "x1", "just some text", 415, "unsupported_media_type",
        "neither a .glb model nor a zip"},
-      {"truncated tar", "x2", cut.substr(0, cut.size() / 2), 422, "corrupt", "cannot be read: Truncated tar archive"},
+      {"truncated tar", "x2", cut.substr(0, cut.size() / 2), 422, "corrupt",
+       "cannot be read: Truncated tar archive"},
       {"empty body", "e1", "", 400, "empty_body", "empty"},
       {"name starting with '.'", ".hidden", zip({model}), 400, "invalid_field", "field 'name'"},
       {"name too long", std::string(65, 'n'), zip({model}), 400, "invalid_field", "1-64 characters"},
