@@ -50,8 +50,7 @@ void ElasticWorkers::start_worker() {
 }
 
 void ElasticWorkers::work(Worker& self) {
-  for (;;) {
-    ++waiting_;
+  while (join_waiting()) {
     const std::optional<uint64_t> task = wait_();
     if (--waiting_ == 0 && task && watcher_idle_) {
       std::lock_guard lock(mutex_);  // under the lock, so the watcher cannot miss the notification
@@ -61,11 +60,20 @@ void ElasticWorkers::work(Worker& self) {
     self.busy_since = now_ns();
     serve_(*task);
     self.busy_since = 0;
-    if (waiting_ >= base_) break;  // a thread added while the others were busy, no longer needed
   }
   std::lock_guard lock(mutex_);
   workers_.remove_if([&](const Worker& w) { return &w == &self; });
   changed_.notify_all();
+}
+
+// Counts the calling thread among those waiting for work, unless `base` already are: then the thread
+// was added while the others were busy, and is no longer needed.
+bool ElasticWorkers::join_waiting() {
+  int waiting = waiting_;
+  do {
+    if (waiting >= base_) return false;
+  } while (!waiting_.compare_exchange_weak(waiting, waiting + 1));
+  return true;
 }
 
 // Adds a thread whenever every thread has been busy with one task for longer than the patience. While

@@ -38,6 +38,7 @@ class ElasticWorkers {
   };
   void start_worker();
   void work(Worker& self);
+  bool join_waiting();
   void watch();
   bool all_stuck() const;
 

@@ -15,7 +15,7 @@ struct ArchiveMember {
   std::string path;
   std::string content;  // a file's bytes
   MemberType type = MemberType::File;
-  std::string target;      // a link's target
+  std::string target{};    // a link's target
   int64_t zero_bytes = 0;  // a file of this many zero bytes instead of `content`
 };
 
