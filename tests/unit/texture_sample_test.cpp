@@ -67,11 +67,10 @@ TEST(TextureTransform, ScaleThenRotateThenOffset) {
   t.offset = {0.5f, 0.25f};
   t.scale = {2.0f, 3.0f};
   t.rotation = float(M_PI) / 2;
-  // (1, 1) scaled (2, 3), rotated by R = [cos sin; -sin cos] = [0 1; -1 0] -> (3, -2), offset -> (3.5,
-  // -1.75).
+  // (1, 1) scaled to (2, 3), rotated a quarter turn counter-clockwise to (-3, 2), offset to (-2.5, 2.25).
   const Point2 uv = t.apply({1.0f, 1.0f});
-  EXPECT_NEAR(uv.x, 3.5f, 1e-6f);
-  EXPECT_NEAR(uv.y, -1.75f, 1e-6f);
+  EXPECT_NEAR(uv.x, -2.5f, 1e-6f);
+  EXPECT_NEAR(uv.y, 2.25f, 1e-6f);
   EXPECT_TRUE(TextureTransform{}.identity());
 }
 
