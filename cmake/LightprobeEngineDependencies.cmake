@@ -4,7 +4,8 @@
 # package. A library whose target is already defined is not looked for again.
 # Each entry: the target the engine links | the package | its version, if one is required.
 set(LIGHTPROBE_ENGINE_DEPENDENCIES "Threads::Threads|Threads" "TBB::tbb|TBB" "embree|embree|3"
-    "OpenEXR::OpenEXR|OpenEXR" "Imath::Imath|Imath" "tinyobjloader::tinyobjloader|tinyobjloader" "fmt::fmt|fmt")
+    "OpenEXR::OpenEXR|OpenEXR" "Imath::Imath|Imath" "tinyobjloader::tinyobjloader|tinyobjloader" "fmt::fmt|fmt"
+    "nlohmann_json::nlohmann_json|nlohmann_json")
 
 macro(lightprobe_find_engine_dependencies find_command)
   foreach(_lightprobe_entry IN LISTS LIGHTPROBE_ENGINE_DEPENDENCIES)
@@ -17,6 +18,11 @@ macro(lightprobe_find_engine_dependencies find_command)
   if(NOT TARGET PkgConfig::STB)  # stb (stb_image_write) has no CMake package: Debian ships a .pc file
     cmake_language(CALL ${find_command} PkgConfig)
     pkg_check_modules(STB REQUIRED QUIET IMPORTED_TARGET stb)
+  endif()
+  # tinygltf is used header-only: engine/model/tinygltf_implementation.cpp compiles it (with stb_image
+  # from libstb and nlohmann_json). Only its header is looked for, not Debian's prebuilt library.
+  if(NOT LIGHTPROBE_TINYGLTF_INCLUDE_DIR)
+    find_path(LIGHTPROBE_TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)
   endif()
 endmacro()
 

@@ -52,6 +52,11 @@ inline constexpr int kMaxImageDimension = 65536;
 inline constexpr int64_t kDefaultMaxMeshTriangles = 2'000'000;
 inline constexpr int64_t kMaxMeshFileBytes = int64_t{256} << 20;
 
+// Model textures: pixels of one texture's base level, and of all the textures of one model together
+// (a 4096 x 4096 texture takes 268 MB as float RGB with its mip levels).
+inline constexpr int64_t kDefaultMaxTexturePixels = int64_t{4096} * 4096;
+inline constexpr int64_t kDefaultMaxModelTexturePixels = 2 * kDefaultMaxTexturePixels;
+
 // Fresnel tables: indices of refraction of any medium (the real part of a conductor's too) and the
 // extinction coefficient k span [0.001, 1000] and [0, 1000], far beyond the materials a render uses;
 // the angle step is in degrees.

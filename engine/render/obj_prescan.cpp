@@ -48,6 +48,17 @@ class Checker {
 
   int64_t triangles() const { return triangles_; }
 
+  // A material library line: numbers and texture options, checked wherever they are.
+  void mtl_line(size_t number, std::string_view text) {
+    line_ = number;
+    const Line l = split(text);
+    if (l.keyword.empty() || l.keyword[0] == '#' || l.keyword == "newmtl") return;
+    for (std::string_view t : l.tokens) {
+      integers_fit(t);
+      number_prefix(t);  // the library parses a number wherever it expects one, whatever follows it
+    }
+  }
+
   void line(size_t number, std::string_view text) {
     line_ = number;
     const Line l = split(text);
@@ -85,14 +96,16 @@ class Checker {
     }
   }
 
-  // [sign] digits [. digits] [e [sign] digits], with a short exponent.
-  void real(std::string_view t) const {
+  // The length of the number [sign] digits [. digits] [e [sign] digits] that `t` starts with (0 if
+  // none); an exponent must have 1 to kMaxObjExponentDigits digits.
+  size_t number_prefix(std::string_view t) const {
     size_t i = 0, mantissa = 0;
     if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
     while (i < t.size() && is_digit(t[i])) ++i, ++mantissa;
     if (i < t.size() && t[i] == '.') ++i;
     while (i < t.size() && is_digit(t[i])) ++i, ++mantissa;
-    if (mantissa && i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    if (mantissa == 0) return 0;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
       ++i;
       if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
       size_t exponent = 0;
@@ -100,7 +113,11 @@ class Checker {
       if (exponent == 0 || exponent > size_t(kMaxObjExponentDigits))
         fail(fmt::format("'{}' has an exponent of over {} digits", t.substr(0, 32), kMaxObjExponentDigits));
     }
-    if (mantissa == 0 || i != t.size()) fail(fmt::format("'{}' is not a number", t.substr(0, 32)));
+    return i;
+  }
+
+  void real(std::string_view t) const {
+    if (number_prefix(t) != t.size()) fail(fmt::format("'{}' is not a number", t.substr(0, 32)));
   }
 
   // vw vertex (joint weight)*: joint ids are whole numbers the library converts through a float.
@@ -148,18 +165,28 @@ class Checker {
   int64_t triangles_ = 0;
 };
 
+// Calls line(number, text) for each line. Lines end at '\n', '\r' or "\r\n", as the library reads them.
+template <class Line>
+void for_each_line(std::string_view text, Line&& line) {
+  size_t number = 0;
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find_first_of("\r\n", start), text.size());
+    line(++number, text.substr(start, end - start));
+    start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
+  }
+}
+
 }  // namespace
 
 int64_t check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles) {
   Checker checker(name, max_triangles);
-  size_t number = 0;
-  // Lines end at '\n', '\r' or "\r\n", as the library reads them.
-  for (size_t start = 0; start < text.size();) {
-    const size_t end = std::min(text.find_first_of("\r\n", start), text.size());
-    checker.line(++number, text.substr(start, end - start));
-    start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
-  }
+  for_each_line(text, [&](size_t number, std::string_view line) { checker.line(number, line); });
   return checker.triangles();
+}
+
+void check_mtl_text(std::string_view text, const std::string& name) {
+  Checker checker(name, 0);
+  for_each_line(text, [&](size_t number, std::string_view line) { checker.mtl_line(number, line); });
 }
 
 }  // namespace lp::render

@@ -19,4 +19,8 @@ inline constexpr int64_t kMaxObjJointId = 1 << 24;  // skin-weight joint ids mus
 // TooLarge when the faces make over `max_triangles`.
 int64_t check_obj_text(std::string_view text, const std::string& name, int64_t max_triangles);
 
+// The same for a material library (.mtl), whose numbers and options go through the same parsers: every
+// integer fits an int and no number has a long exponent. Throws lp::Error(Corrupt) naming the line.
+void check_mtl_text(std::string_view text, const std::string& name);
+
 }  // namespace lp::render

@@ -1,0 +1,268 @@
+#include "engine/model/gltf_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <string_view>
+#include <vector>
+
+#include "engine/core/error.hpp"
+
+namespace lp::gltf {
+namespace {
+
+using json = nlohmann::json;
+
+class Checker {
+ public:
+  explicit Checker(const std::string& name) : name_(name) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    throw Error(ErrorKind::Corrupt, fmt::format("glTF {}: {} {}", name_, path, problem));
+  }
+
+  const json* field(const json& o, const char* key) const {
+    const auto it = o.find(key);
+    return it == o.end() ? nullptr : &*it;
+  }
+  static std::string at(const std::string& path, const char* key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  void object(const json& v, const std::string& path) const {
+    if (!v.is_object()) fail(path, "must be an object");
+    if (const json* n = field(v, "name"); n && !n->is_string()) fail(at(path, "name"), "must be a string");
+    if (const json* e = field(v, "extensions")) {
+      if (!e->is_object()) fail(at(path, "extensions"), "must be an object");
+      for (const auto& [key, value] : e->items())
+        if (!value.is_object()) fail(at(path, "extensions") + "." + key.substr(0, 64), "must be an object");
+    }
+  }
+  void index(const json& o, const char* key, const std::string& path, bool required = false) const {
+    const json* v = field(o, key);
+    if (!v) {
+      if (required) fail(at(path, key), "is missing");
+      return;
+    }
+    if (!v->is_number_unsigned()) fail(at(path, key), "must be a non-negative integer");
+  }
+  void number(const json& o, const char* key, const std::string& path) const {
+    if (const json* v = field(o, key); v && !v->is_number()) fail(at(path, key), "must be a number");
+  }
+  void boolean(const json& o, const char* key, const std::string& path) const {
+    if (const json* v = field(o, key); v && !v->is_boolean()) fail(at(path, key), "must be a boolean");
+  }
+  void string(const json& o, const char* key, const std::string& path) const {
+    if (const json* v = field(o, key); v && !v->is_string()) fail(at(path, key), "must be a string");
+  }
+  template <class Element>
+  void array(const json& o, const char* key, const std::string& path, Element&& element) const {
+    const json* v = field(o, key);
+    if (!v) return;
+    if (!v->is_array()) fail(at(path, key), "must be an array");
+    for (size_t i = 0; i < v->size(); ++i) element((*v)[i], fmt::format("{}[{}]", at(path, key), i));
+  }
+  void numbers(const json& o, const char* key, const std::string& path) const {
+    array(o, key, path, [&](const json& v, const std::string& p) {
+      if (!v.is_number()) fail(p, "must be a number");
+    });
+  }
+  void indices(const json& o, const char* key, const std::string& path) const {
+    array(o, key, path, [&](const json& v, const std::string& p) {
+      if (!v.is_number_unsigned()) fail(p, "must be a non-negative integer");
+    });
+  }
+  void strings(const json& o, const char* key, const std::string& path) const {
+    array(o, key, path, [&](const json& v, const std::string& p) {
+      if (!v.is_string()) fail(p, "must be a string");
+    });
+  }
+  // An object-valued property checked by `check` when present.
+  template <class Check>
+  void child(const json& o, const char* key, const std::string& path, Check&& check) const {
+    if (const json* v = field(o, key)) {
+      object(*v, at(path, key));
+      check(*v, at(path, key));
+    }
+  }
+
+  void texture_info(const json& o, const std::string& path) const {
+    index(o, "index", path, true);
+    index(o, "texCoord", path);
+    number(o, "scale", path);
+    number(o, "strength", path);
+    if (const json* e = field(o, "extensions"))
+      child(*e, "KHR_texture_transform", at(path, "extensions"), [&](const json& t, const std::string& p) {
+        numbers(t, "offset", p);
+        number(t, "rotation", p);
+        numbers(t, "scale", p);
+        index(t, "texCoord", p);
+      });
+  }
+
+  void material(const json& m, const std::string& path) const {
+    const auto info = [&](const json& v, const std::string& p) { texture_info(v, p); };
+    child(m, "pbrMetallicRoughness", path, [&](const json& pbr, const std::string& p) {
+      numbers(pbr, "baseColorFactor", p);
+      child(pbr, "baseColorTexture", p, info);
+      number(pbr, "metallicFactor", p);
+      number(pbr, "roughnessFactor", p);
+      child(pbr, "metallicRoughnessTexture", p, info);
+    });
+    child(m, "normalTexture", path, info);
+    child(m, "occlusionTexture", path, info);
+    child(m, "emissiveTexture", path, info);
+    numbers(m, "emissiveFactor", path);
+    string(m, "alphaMode", path);
+    number(m, "alphaCutoff", path);
+    boolean(m, "doubleSided", path);
+  }
+
+  void primitive(const json& p, const std::string& path) const {
+    const json* attributes = field(p, "attributes");
+    if (!attributes) fail(at(path, "attributes"), "is missing");
+    object(*attributes, at(path, "attributes"));
+    for (const auto& [key, value] : attributes->items())
+      if (!value.is_number_unsigned())
+        fail(at(path, "attributes") + "." + key.substr(0, 64), "must be a non-negative integer");
+    index(p, "indices", path);
+    index(p, "material", path);
+    index(p, "mode", path);
+  }
+
+  // Each element of the top-level array `key` an object, checked by `check`.
+  template <class Check>
+  void objects(const json& root, const char* key, Check&& check) const {
+    array(root, key, "", [&](const json& v, const std::string& p) {
+      object(v, p);
+      check(v, p);
+    });
+  }
+
+  void document(const json& root) const {
+    object(root, "the document");
+    child(root, "asset", "", [&](const json& a, const std::string& p) { string(a, "version", p); });
+    if (!field(root, "asset")) fail("asset", "is missing");
+    index(root, "scene", "");
+    strings(root, "extensionsUsed", "");
+    strings(root, "extensionsRequired", "");
+    const auto none = [](const json&, const std::string&) {};
+    objects(root, "accessors", [&](const json& a, const std::string& p) {
+      index(a, "bufferView", p);
+      index(a, "byteOffset", p);
+      index(a, "componentType", p, true);
+      boolean(a, "normalized", p);
+      index(a, "count", p, true);
+      string(a, "type", p);
+      numbers(a, "min", p);
+      numbers(a, "max", p);
+    });
+    objects(root, "buffers", [&](const json& b, const std::string& p) {
+      string(b, "uri", p);
+      index(b, "byteLength", p, true);
+    });
+    objects(root, "bufferViews", [&](const json& v, const std::string& p) {
+      index(v, "buffer", p, true);
+      index(v, "byteOffset", p);
+      index(v, "byteLength", p, true);
+      index(v, "byteStride", p);
+      index(v, "target", p);
+    });
+    objects(root, "images", [&](const json& i, const std::string& p) {
+      string(i, "uri", p);
+      string(i, "mimeType", p);
+      index(i, "bufferView", p);
+    });
+    objects(root, "materials", [&](const json& m, const std::string& p) { material(m, p); });
+    objects(root, "meshes", [&](const json& m, const std::string& p) {
+      if (!field(m, "primitives")) fail(at(p, "primitives"), "is missing");
+      array(m, "primitives", p, [&](const json& v, const std::string& pp) {
+        object(v, pp);
+        primitive(v, pp);
+      });
+      numbers(m, "weights", p);
+    });
+    objects(root, "nodes", [&](const json& n, const std::string& p) {
+      index(n, "camera", p);
+      indices(n, "children", p);
+      index(n, "skin", p);
+      numbers(n, "matrix", p);
+      index(n, "mesh", p);
+      numbers(n, "rotation", p);
+      numbers(n, "scale", p);
+      numbers(n, "translation", p);
+      numbers(n, "weights", p);
+    });
+    objects(root, "samplers", [&](const json& s, const std::string& p) {
+      for (const char* key : {"magFilter", "minFilter", "wrapS", "wrapT"}) index(s, key, p);
+    });
+    objects(root, "scenes", [&](const json& s, const std::string& p) { indices(s, "nodes", p); });
+    objects(root, "textures", [&](const json& t, const std::string& p) {
+      index(t, "sampler", p);
+      index(t, "source", p);
+    });
+    for (const char* key : {"animations", "cameras", "skins"}) objects(root, key, none);
+  }
+
+ private:
+  const std::string& name_;
+};
+
+uint32_t read_u32(const uint8_t* p) {
+  uint32_t v;
+  std::memcpy(&v, p, 4);
+  return v;  // glTF is little-endian, as are the machines we build for
+}
+
+// The JSON of a .gltf, or the JSON chunk of a .glb.
+std::string_view json_text(std::span<const uint8_t> bytes, const std::string& name) {
+  const auto* chars = reinterpret_cast<const char*>(bytes.data());
+  if (bytes.size() < 4 || std::memcmp(chars, "glTF", 4) != 0) return {chars, bytes.size()};
+  const auto corrupt = [&](const std::string& why) {
+    throw Error(ErrorKind::Corrupt, "glb " + name + ": " + why);
+  };
+  if (bytes.size() < 20) corrupt("shorter than its header");
+  if (read_u32(bytes.data() + 4) != 2)
+    corrupt(fmt::format("version {} is not 2", read_u32(bytes.data() + 4)));
+  if (read_u32(bytes.data() + 8) > bytes.size()) corrupt("its length is past the end of the file");
+  const uint32_t length = read_u32(bytes.data() + 12);
+  if (std::memcmp(chars + 16, "JSON", 4) != 0) corrupt("the first chunk is not JSON");
+  if (length > bytes.size() - 20) corrupt("the JSON chunk runs past the end of the file");
+  return {chars + 20, length};
+}
+
+// Depth of nested arrays and objects, counted over the text without recursion; strings skipped.
+void check_depth(std::string_view text, const std::string& name) {
+  int depth = 0;
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw Error(ErrorKind::Corrupt,
+                    fmt::format("glTF {}: JSON nested over {} levels deep", name, kMaxJsonDepth));
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+}  // namespace
+
+void check_schema(std::span<const uint8_t> bytes, const std::string& name) {
+  const std::string_view text = json_text(bytes, name);
+  check_depth(text, name);
+  const json root = json::parse(text.begin(), text.end(), nullptr, false);
+  if (root.is_discarded()) throw Error(ErrorKind::Corrupt, "glTF " + name + ": not valid JSON");
+  Checker(name).document(root);
+}
+
+}  // namespace lp::gltf

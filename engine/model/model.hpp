@@ -1,0 +1,81 @@
+#pragma once
+// A model ready to render: the triangles of every mesh the scene places, in world space, in one set of
+// flat arrays (one Embree triangle geometry: `positions` as RTC_FORMAT_FLOAT3 vertices, `indices` as
+// RTC_FORMAT_UINT3 triangles), per-vertex attributes to interpolate at a hit's barycentrics, and a
+// material per triangle. Materials are glTF's metallic-roughness model; OBJ/MTL files are mapped onto it.
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/limits.hpp"
+#include "engine/core/point2.hpp"
+#include "engine/core/vec3.hpp"
+#include "engine/texture/texture.hpp"
+#include "engine/texture/texture_transform.hpp"
+#include "engine/texture/wrap_mode.hpp"
+
+namespace lp {
+
+// Limits checked while a model loads, before what they bound is allocated (lp::Error TooLarge).
+struct ModelLimits {
+  int64_t max_triangles = limits::kDefaultMaxMeshTriangles;  // after the node hierarchy's instancing
+  int64_t max_file_bytes = limits::kMaxMeshFileBytes;        // the model and every file it refers to
+  int64_t max_texture_pixels = limits::kDefaultMaxTexturePixels;
+  int64_t max_total_texture_pixels = limits::kDefaultMaxModelTexturePixels;
+};
+
+// A texture as a material uses it: the shared texels, the sampler's wrap modes and the texture
+// transform to apply to the vertex UVs before the lookup.
+struct TextureBinding {
+  std::shared_ptr<const Texture> texture;
+  TextureSampler sampler;
+  TextureTransform transform;
+
+  Rgba sample(Point2 uv, float level) const { return texture->sample(transform.apply(uv), level, sampler); }
+  // The mip level for a footprint `uv_width` wide in the vertex UVs: the transform's scale widens it.
+  float level_for_footprint(float uv_width) const {
+    return texture->level_for_footprint(uv_width *
+                                        std::sqrt(std::abs(transform.scale.x * transform.scale.y)));
+  }
+};
+
+// glTF 2.0 metallic-roughness. A texture, where present, multiplies its factor.
+struct ModelMaterial {
+  std::string name;
+  Rgba base_color_factor;                    // linear RGBA
+  std::optional<TextureBinding> base_color;  // sRGB-decoded
+  float metallic_factor = 1;
+  float roughness_factor = 1;                        // perceptual roughness: GGX alpha = roughness^2
+  std::optional<TextureBinding> metallic_roughness;  // linear: B = metallic, G = roughness
+  std::optional<TextureBinding> normal;  // linear, tangent space: n = (2 * rgb - 1) * (scale, scale, 1)
+  float normal_scale = 1;
+  Rgb emissive_factor{0, 0, 0};
+  std::optional<TextureBinding> emissive;  // sRGB-decoded
+};
+
+// Tangent direction (unit, perpendicular to the normal) and handedness: the bitangent is
+// cross(normal, tangent) * w, pointing up the image (towards smaller v), as glTF defines it.
+struct Tangent {
+  Vec3 direction{1, 0, 0};
+  float w = 1;
+};
+
+struct Model {
+  std::vector<Vec3> positions;  // world space
+  std::vector<Vec3> normals;    // per vertex, unit
+  std::vector<Point2> uvs;      // TEXCOORD_0 ((0, 0) where a mesh has none)
+  std::vector<Tangent> tangents;
+  std::vector<uint32_t> indices;             // three per triangle, counter-clockwise seen from the front
+  std::vector<uint32_t> triangle_materials;  // per triangle, an index into `materials`
+  std::vector<ModelMaterial> materials;
+
+  size_t vertex_count() const { return positions.size(); }
+  size_t triangle_count() const { return indices.size() / 3; }
+  // Bytes of the geometry arrays plus the textures the materials hold (shared ones counted once).
+  int64_t memory_bytes() const;
+};
+
+}  // namespace lp

@@ -1,0 +1,96 @@
+#include "engine/model/model_files.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <fstream>
+#include <system_error>
+
+#include "engine/core/error.hpp"
+
+namespace lp {
+namespace fs = std::filesystem;
+
+ModelFiles::ModelFiles(fs::path folder, int64_t max_bytes) : max_bytes_(max_bytes) {
+  if (!folder.empty()) {
+    std::error_code ec;
+    folder_ = fs::canonical(folder, ec);
+    if (ec) throw Error(ErrorKind::NotFound, "model folder not found: " + folder.filename().string());
+  }
+}
+
+void ModelFiles::count(int64_t bytes, const std::string& what) {
+  bytes_ += bytes;
+  if (bytes_ > max_bytes_)
+    throw Error(ErrorKind::TooLarge,
+                fmt::format("model files are over {} bytes together (at {})", max_bytes_, what));
+}
+
+fs::path ModelFiles::resolve(const std::string& relative) const {
+  if (folder_.empty())
+    throw Error(ErrorKind::InvalidArgument,
+                "a model read from memory cannot refer to the file '" + relative.substr(0, 128) + "'");
+  const fs::path rel = fs::path(relative).lexically_normal();
+  if (relative.empty() || rel.is_absolute() || rel.has_root_name() || rel.has_root_directory() ||
+      (!rel.empty() && *rel.begin() == ".."))
+    throw Error(ErrorKind::InvalidArgument,
+                "model refers to '" + relative.substr(0, 128) + "', which is not a path inside its folder");
+  std::error_code ec;
+  const fs::path full = fs::weakly_canonical(folder_ / rel, ec);
+  const auto [end, _] = std::mismatch(folder_.begin(), folder_.end(), full.begin(), full.end());
+  if (ec || end != folder_.end())
+    throw Error(ErrorKind::InvalidArgument,
+                "model refers to '" + relative.substr(0, 128) + "', which leads outside its folder");
+  return full;
+}
+
+std::vector<uint8_t> ModelFiles::read(const std::string& relative, const std::string& what) {
+  const fs::path path = resolve(relative);
+  auto bytes = read_file(path, max_bytes_ - bytes_);
+  count(int64_t(bytes.size()), what);
+  return bytes;
+}
+
+std::string ModelFiles::cache_key(const std::string& relative) const {
+  const fs::path path = resolve(relative);
+  std::error_code ec;
+  const auto size = fs::file_size(path, ec);
+  const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
+  return fmt::format("{}|{}|{}", path.string(), ec ? 0 : size, ec ? 0 : time);
+}
+
+std::vector<uint8_t> ModelFiles::read_file(const fs::path& path, int64_t max_bytes) {
+  const std::string name = path.filename().string();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error(ErrorKind::NotFound, "file not found: " + name);
+  const auto size = fs::file_size(path, ec);
+  if (ec) throw Error(ErrorKind::NotFound, "file not readable: " + name);
+  if (int64_t(size) > max_bytes)
+    throw Error(ErrorKind::TooLarge, fmt::format("{} is over the {} bytes left for the model's files", name,
+                                                 std::max<int64_t>(max_bytes, 0)));
+  std::ifstream in(path, std::ios::binary);
+  std::vector<uint8_t> bytes(size);
+  if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+    throw Error(ErrorKind::NotFound, "file not readable: " + name);
+  return bytes;
+}
+
+std::string decode_uri(const std::string& uri) {
+  std::string out;
+  const auto hex = [](char c) {
+    return c >= '0' && c <= '9'
+               ? c - '0'
+               : (c >= 'a' && c <= 'f' ? c - 'a' + 10 : (c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1));
+  };
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out += char(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace lp

@@ -1,0 +1,40 @@
+#pragma once
+// The files a model refers to (glTF buffers and images, OBJ material libraries and textures), read
+// relative to the model file's folder and never outside it: an absolute path, or one that leaves the
+// folder by `..` or through a link, is refused. Every byte read counts against the model's byte limit.
+// A model parsed from memory has no folder and may refer to no file.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lp {
+
+class ModelFiles {
+ public:
+  // `folder` empty: a model from memory.
+  ModelFiles(std::filesystem::path folder, int64_t max_bytes);
+
+  // Counts bytes read by other means (the model file itself) against the limit.
+  void count(int64_t bytes, const std::string& what);
+  // Throws lp::Error: InvalidArgument (a path outside the folder, or any path for a model from
+  // memory), NotFound, TooLarge.
+  std::vector<uint8_t> read(const std::string& relative, const std::string& what);
+  // A key naming the file's content for the texture cache: its canonical path, size and modification time.
+  std::string cache_key(const std::string& relative) const;
+
+  // Reads a whole file (at most `max_bytes`), for the model file itself.
+  static std::vector<uint8_t> read_file(const std::filesystem::path& path, int64_t max_bytes);
+
+ private:
+  std::filesystem::path resolve(const std::string& relative) const;
+
+  std::filesystem::path folder_;  // canonical, or empty
+  int64_t max_bytes_, bytes_ = 0;
+};
+
+// A URI's %XX escapes decoded (glTF URIs are URI-encoded).
+std::string decode_uri(const std::string& uri);
+
+}  // namespace lp
