@@ -19,7 +19,7 @@ namespace {
 
 std::shared_ptr<const EnvMap> forest() {
   static const auto map =
-      std::make_shared<const EnvMap>(read_image_file(test::envmap_path("forest.exr")).image);
+      std::make_shared<const EnvMap>(read_image_file(lp::test::envmap_path("forest.exr")).image);
   return map;
 }
 
