@@ -21,12 +21,19 @@ double diffuse_fresnel_reflectance(double ior) {
 
 }  // namespace
 
+float PlasticBsdf::diffuse_fresnel(float ior) {
+  return float(diffuse_fresnel_reflectance(ior));
+}
+
 PlasticBsdf::PlasticBsdf(Rgb albedo, float ior, float roughness)
+    : PlasticBsdf(albedo, ior, roughness, diffuse_fresnel(ior)) {}
+
+PlasticBsdf::PlasticBsdf(Rgb albedo, float ior, float roughness, float fdr)
     : albedo_(albedo),
       ior_(ior),
       delta_specular_(roughness < kDeltaLobeAlpha),
       ggx_(roughness),
-      fdr_(float(diffuse_fresnel_reflectance(ior))),
+      fdr_(fdr),
       mean_albedo_((albedo.x + albedo.y + albedo.z) / 3.0f) {}
 
 float PlasticBsdf::fresnel(float cos_i) const {

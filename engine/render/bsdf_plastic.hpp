@@ -13,6 +13,8 @@ namespace lp::render {
 class PlasticBsdf final : public Bsdf {
  public:
   PlasticBsdf(Rgb albedo, float ior, float roughness);
+  // The same with the coat's diffuse_fresnel(ior) given (it costs an integral to compute).
+  PlasticBsdf(Rgb albedo, float ior, float roughness, float diffuse_fresnel);
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
@@ -20,6 +22,7 @@ class PlasticBsdf final : public Bsdf {
 
   // The cosine-weighted hemispherical mean of the coat's reflectance, 2 * integral of F(mu) mu dmu.
   float diffuse_fresnel() const { return fdr_; }
+  static float diffuse_fresnel(float ior);
 
  private:
   float fresnel(float cos_i) const;

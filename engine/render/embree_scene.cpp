@@ -6,6 +6,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/frame.hpp"
+#include "engine/render/placed_model.hpp"
 
 namespace lp::render {
 
@@ -14,7 +15,8 @@ struct EmbreeScene::Object {
   Vec3 center;  // sphere
   float radius = 0;
   Vec3 normal;  // plane
-  TriangleMesh mesh;
+  Model model;
+  bool model_materials = true;
 };
 
 namespace {
@@ -121,18 +123,20 @@ void EmbreeScene::add_plane(uint32_t id, const PlaneObject& p, float half_size) 
 void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& limits) {
   Object& o = objects_[id];
   o.kind = Object::Kind::Mesh;
-  o.mesh = load_obj_mesh(m, limits);
-  triangle_count_ += o.mesh.triangle_count();
+  o.model = place_model(m, limits);
+  o.model_materials = m.model_materials;
+  triangle_count_ += o.model.triangle_count();
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Embree's own buffers: it reads vertices with 16-byte loads, past the end of a packed array.
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                        3 * sizeof(float), o.mesh.positions.size()));
-  for (size_t i = 0; i < o.mesh.positions.size(); ++i) {
-    v[3 * i] = o.mesh.positions[i].x, v[3 * i + 1] = o.mesh.positions[i].y,
-          v[3 * i + 2] = o.mesh.positions[i].z;
+                                                        3 * sizeof(float), o.model.positions.size()));
+  for (size_t i = 0; i < o.model.positions.size(); ++i) {
+    const Vec3& q = o.model.positions[i];
+    v[3 * i] = q.x, v[3 * i + 1] = q.y, v[3 * i + 2] = q.z;
   }
   auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                             3 * sizeof(uint32_t), o.mesh.triangle_count()));
-  std::copy(o.mesh.indices.begin(), o.mesh.indices.end(), idx);
+                                                             3 * sizeof(uint32_t), o.model.triangle_count()));
+  std::copy(o.model.indices.begin(), o.model.indices.end(), idx);
   attach(g, id);
 }
 
@@ -160,17 +164,44 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
       hit.normal = o.normal;
       hit.position = p - o.normal * dot(p - o.center, o.normal);
       break;
-    case Object::Kind::Mesh: {
-      const uint32_t* tri = &o.mesh.indices[size_t(rh.hit.primID) * 3];
-      const Vec3 a = o.mesh.positions[tri[0]], b = o.mesh.positions[tri[1]], c = o.mesh.positions[tri[2]];
-      const Vec3 n = cross(b - a, c - a);
-      // Embree skips degenerate triangles, but one of float-rounded area may still be hit: use its normal.
-      hit.normal = dot(n, n) > 0 ? normalize(n) : normalize(Vec3{rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    case Object::Kind::Mesh:
       hit.position = p;
-      break;
-    }
+      fill_mesh_hit(o, rh.hit, hit);
+      return hit;
   }
+  hit.shading_normal = hit.normal;
+  if (o.kind == Object::Kind::Sphere) hit.curvature = 1.0f / o.radius;
   return hit;
+}
+
+void EmbreeScene::fill_mesh_hit(const Object& o, const RTCHit& rh, SurfaceHit& hit) const {
+  const Model& m = o.model;
+  const size_t triangle = rh.primID;
+  const uint32_t* tri = &m.indices[triangle * 3];
+  const Vec3 a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
+  const Vec3 n = cross(b - a, c - a);
+  // Embree skips degenerate triangles, but one of float-rounded area may still be hit: use its normal.
+  hit.normal = dot(n, n) > 0 ? normalize(n) : normalize(Vec3{rh.Ng_x, rh.Ng_y, rh.Ng_z});
+  const float w1 = rh.u, w2 = rh.v, w0 = 1.0f - w1 - w2;
+  const Vec3 na = m.normals[tri[0]], nb = m.normals[tri[1]], nc = m.normals[tri[2]];
+  const Vec3 ns = na * w0 + nb * w1 + nc * w2;
+  hit.shading_normal = dot(ns, ns) > 0 ? normalize(ns) : hit.normal;
+  // The largest turn of the vertex normals per unit of edge length.
+  const float ab = length(b - a), bc = length(c - b), ca = length(a - c);
+  hit.curvature = std::max({ab > 0 ? length(nb - na) / ab : 0.0f, bc > 0 ? length(nc - nb) / bc : 0.0f,
+                            ca > 0 ? length(na - nc) / ca : 0.0f});
+  if (o.model_materials) hit.material = &m.materials[m.triangle_materials[triangle]];
+  const Point2 ta = m.uvs[tri[0]], tb = m.uvs[tri[1]], tc = m.uvs[tri[2]];
+  hit.uv = {ta.x * w0 + tb.x * w1 + tc.x * w2, ta.y * w0 + tb.y * w1 + tc.y * w2};
+  const float uv_area = std::abs((tb.x - ta.x) * (tc.y - ta.y) - (tc.x - ta.x) * (tb.y - ta.y));
+  const float world_area = length(n);
+  hit.uv_density = world_area > 0 ? std::sqrt(uv_area / world_area) : 0.0f;
+  const Tangent &t0 = m.tangents[tri[0]], &t1 = m.tangents[tri[1]], &t2 = m.tangents[tri[2]];
+  const Vec3 t = t0.direction * w0 + t1.direction * w1 + t2.direction * w2;
+  const Vec3 t_perp = t - hit.shading_normal * dot(t, hit.shading_normal);  // Gram-Schmidt
+  hit.tangent.direction =
+      dot(t_perp, t_perp) > 1e-12f ? normalize(t_perp) : Frame::from_normal(hit.shading_normal).s;
+  hit.tangent.w = t0.w < 0 ? -1.0f : 1.0f;
 }
 
 bool EmbreeScene::occluded(const Ray& r, float t_max) const {

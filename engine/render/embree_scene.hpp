@@ -1,17 +1,18 @@
 #pragma once
 // The scene's geometry in Embree 3: exact spheres (Embree's sphere primitive, hit points re-projected
-// onto the analytic sphere), planes (a quad far larger than the rest of the scene), triangle meshes.
+// onto the analytic sphere), planes (a quad far larger than the rest of the scene), triangle meshes
+// from lp::Model (vertex normals, texture coordinates, tangents and materials interpolated at a hit).
 // Geometry i of the Embree scene is object i of the SceneDesc.
+#include <embree3/rtcore.h>
+
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include <embree3/rtcore.h>
-
+#include "engine/model/model.hpp"
 #include "engine/render/camera.hpp"
-#include "engine/render/mesh_loader.hpp"
 #include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
@@ -21,6 +22,15 @@ struct SurfaceHit {
   Vec3 position;
   Vec3 normal;  // unit geometric normal: outward on spheres, the plane's normal, CCW winding on meshes
   uint32_t object = 0;
+  Vec3 shading_normal;  // unit interpolated vertex normal (the geometric one on spheres and planes)
+  float curvature = 0;  // how fast the shading normal turns along the surface, radians per unit length
+  // Mesh objects only: the model's material of the triangle (null: the object's own material), the
+  // texture coordinates, the tangent (unit, perpendicular to shading_normal) and the triangle's texture
+  // coordinates per unit of length, sqrt(uv area / world area).
+  const ModelMaterial* material = nullptr;
+  Point2 uv;
+  Tangent tangent;
+  float uv_density = 0;
 };
 
 class EmbreeScene {
@@ -43,6 +53,7 @@ class EmbreeScene {
 
  private:
   struct Object;
+  void fill_mesh_hit(const Object& o, const RTCHit& rh, SurfaceHit& hit) const;
   void add_sphere(uint32_t id, const SphereObject& s);
   void add_plane(uint32_t id, const PlaneObject& p, float half_size);
   void add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& limits);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/render/model_shading.hpp"
 #include "engine/render/warp.hpp"
 
 namespace lp::render {
@@ -33,6 +34,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
   const bool lit_by_map =
       config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
   EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
+  RayCone cone = RayCone::from_pixel(config_.pixel_spread);
   for (int depth = 0;; ++depth) {
     ++rays;
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
@@ -41,13 +43,12 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
       result += beta * escaped(escape, depth, delta_chain, last_delta, bsdf_pdf);
       break;
     }
+    cone.advance(hit->t);
+    std::optional<MetallicRoughnessBsdf> model_bsdf;
+    const Shading shading = shade(*hit, -ray.direction, cone, model_bsdf);
+    result += beta * shading.emission;
     if (depth >= config_.max_depth) break;
-
-    const Bsdf& bsdf = *bsdfs_[hit->object];
-    const Vec3 wo_world = -ray.direction;
-    const bool flip = bsdf.two_sided() && dot(wo_world, hit->normal) < 0;
-    const Frame frame = Frame::from_normal(flip ? -hit->normal : hit->normal);
-    const Shading shading{*hit, frame, bsdf, frame.to_local(wo_world)};
+    const Bsdf& bsdf = shading.bsdf;
 
     // A fixed number of dimensions per bounce, whatever the branches, keeps the sequences aligned.
     const Point2 u_light = sampler.get_2d();
@@ -69,11 +70,33 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
       if (u_roulette >= q) break;
       beta = beta / q;
     }
-    const Vec3 wi = normalize(frame.to_world(s->wi));
+    const Vec3 wi = normalize(shading.frame.to_world(s->wi));
+    if (!same_side(shading, wi)) break;
+    cone.bounce(hit->curvature, dot(ray.direction, hit->normal), s->delta, s->pdf);
     ray = {EmbreeScene::offset_origin(*hit, wi), wi};
     if (lit_by_map || delta_chain) escape = env_.locate(wi);
   }
   return result;
+}
+
+Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayCone& cone,
+                                      std::optional<MetallicRoughnessBsdf>& model_bsdf) const {
+  Vec3 ns = hit.shading_normal;
+  Rgb emission{};
+  if (hit.material) {
+    const TextureLookup lookup{cone.surface_width(dot(wo, hit.normal)), config_.mipmaps, config_.normal_maps};
+    const ModelSurface surface = model_surface(*hit.material, hit, lookup);
+    model_bsdf.emplace(surface.base_color, surface.metallic, surface.roughness);
+    ns = surface.shading_normal;
+    emission = surface.emission;
+  }
+  const Bsdf& bsdf = model_bsdf ? static_cast<const Bsdf&>(*model_bsdf) : *bsdfs_[hit.object];
+  const bool flip = bsdf.two_sided() && dot(wo, hit.normal) < 0;
+  const Vec3 ng = flip ? -hit.normal : hit.normal;
+  if (flip) ns = -ns;
+  if (bsdf.two_sided() && ns != ng) ns = bend_shading_normal(ns, ng, wo);
+  const Frame frame = Frame::from_normal(ns);
+  return {hit, frame, bsdf, frame.to_local(wo), ng, emission};
 }
 
 Rgb Integrator::escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta,
@@ -122,7 +145,7 @@ Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, uint64_
 
 Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf,
                            uint64_t& rays) const {
-  if (!(light_pdf > 0) || is_black(light.radiance)) return {};
+  if (!(light_pdf > 0) || is_black(light.radiance) || !same_side(s, light.direction)) return {};
   const Vec3 wi = s.frame.to_local(light.direction);
   const Rgb f = s.bsdf.eval(s.wo, wi);
   if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
@@ -131,6 +154,7 @@ Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float lig
 }
 
 Rgb Integrator::direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const {
+  if (!same_side(s, light.direction)) return {};
   const Rgb f = s.bsdf.eval(s.wo, s.frame.to_local(light.direction));
   if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
   return f * light.power;

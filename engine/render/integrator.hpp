@@ -10,13 +10,16 @@
 // Russian roulette after three bounces; `max_depth` bounces at most.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "engine/render/bsdf.hpp"
+#include "engine/render/bsdf_metallic_roughness.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/env_light.hpp"
 #include "engine/render/frame.hpp"
+#include "engine/render/ray_cone.hpp"
 
 namespace lp::render {
 
@@ -24,6 +27,9 @@ struct IntegratorConfig {
   LightingMode mode = LightingMode::EnvMap;
   int max_depth = 8;
   bool env_visible = true;  // camera rays that escape see the map (else black)
+  float pixel_spread = 0;   // the camera's ray cone angle per pixel (radians)
+  bool mipmaps = true;      // texture levels from ray cones (else level 0)
+  bool normal_maps = true;
 };
 
 class Integrator {
@@ -37,10 +43,20 @@ class Integrator {
  private:
   struct Shading {
     const SurfaceHit& hit;
-    const Frame& frame;
+    Frame frame;  // around the shading normal
     const Bsdf& bsdf;
-    Vec3 wo;  // local
+    Vec3 wo;         // local
+    Vec3 geometric;  // the geometric normal, on the side of wo for two-sided BSDFs
+    Rgb emission;
   };
+  // The BSDF, frame and emission at a hit; a model's BSDF is built in `model_bsdf`.
+  Shading shade(const SurfaceHit& hit, Vec3 wo_world, const RayCone& cone,
+                std::optional<MetallicRoughnessBsdf>& model_bsdf) const;
+  // False for a direction on the other side of the geometric surface than wo, which a reflecting
+  // BSDF must not reach through a perturbed shading normal (it would leak light through the surface).
+  static bool same_side(const Shading& s, Vec3 direction) {
+    return !s.bsdf.two_sided() || dot(direction, s.geometric) > 0;
+  }
   Rgb escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta, float bsdf_pdf) const;
   Rgb direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const;
   Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;

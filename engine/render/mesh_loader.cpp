@@ -8,8 +8,8 @@
 #include <string>
 #include <system_error>
 
-#include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
+#include "engine/render/mesh_transform.hpp"
 #include "engine/render/obj_prescan.hpp"
 
 namespace lp::render {
@@ -29,23 +29,6 @@ std::string read_text(const std::filesystem::path& path, int64_t max_bytes) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-Vec3 rotate_axis(Vec3 v, int axis, float degrees) {
-  const float a = degrees * kPiF / 180.0f, c = std::cos(a), s = std::sin(a);
-  switch (axis) {
-    case 0:
-      return {v.x, c * v.y - s * v.z, s * v.y + c * v.z};
-    case 1:
-      return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
-    default:
-      return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
-  }
-}
-
-void check_transform(const MeshObject& m) {
-  if (!(std::isfinite(m.scale) && m.scale > 0) || !finite(m.translate) || !finite(m.rotate_deg))
-    throw Error(ErrorKind::InvalidArgument, "mesh: scale must be > 0 and the transform finite");
-}
-
 }  // namespace
 
 int64_t check_obj_file(const std::filesystem::path& path, const MeshLimits& limits) {
@@ -59,7 +42,7 @@ TriangleMesh load_obj_mesh(const MeshObject& m, const MeshLimits& limits) {
 
 TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& m,
                                 const MeshLimits& limits) {
-  check_transform(m);
+  check_mesh_transform(m);
   check_obj_text(text, name, limits.max_triangles);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
@@ -74,9 +57,7 @@ TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name
   for (size_t i = 0; i + 2 < v.size(); i += 3) {
     Vec3 p{v[i], v[i + 1], v[i + 2]};
     if (!finite(p)) throw Error(ErrorKind::Corrupt, "mesh " + name + ": a vertex is not finite");
-    p = p * m.scale;
-    p = rotate_axis(rotate_axis(rotate_axis(p, 0, m.rotate_deg.x), 1, m.rotate_deg.y), 2, m.rotate_deg.z);
-    mesh.positions.push_back(p + m.translate);
+    mesh.positions.push_back(transform_mesh_point(m, p));
   }
   size_t index_count = 0;
   for (const auto& shape : reader.GetShapes()) index_count += shape.mesh.indices.size();

@@ -2,6 +2,7 @@
 // What to render, as plain data: the contract between the request parser (api/) and the renderer.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -10,6 +11,7 @@
 #include "engine/core/enum_table.hpp"
 #include "engine/core/limits.hpp"
 #include "engine/core/vec3.hpp"
+#include "engine/model/model.hpp"
 
 namespace lp::render {
 
@@ -57,6 +59,12 @@ struct MeshObject {
   Vec3 translate;
   float scale = 1;
   Vec3 rotate_deg;  // rotations about x, then y, then z
+  // The model already loaded from `path` (in its file's space, before the transform above), or null:
+  // the renderer then loads it. .gltf, .glb and .obj files go through lp::load_model.
+  std::shared_ptr<const Model> model;
+  // True: the model's own materials (with their textures); false: the object's `material` overrides
+  // them everywhere (a request that names a material).
+  bool model_materials = false;
   void validate(const std::string& prefix) const;
 };
 struct SceneObject {
@@ -109,6 +117,8 @@ struct RenderSettings {
   int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
   MeshLimits mesh_limits;
+  bool mipmaps = true;      // texture levels chosen by ray cones (else level 0 everywhere)
+  bool normal_maps = true;  // tangent-space normal maps perturb the shading normal
   void validate(const std::string& prefix) const;
 };
 

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/image/image_io.hpp"
 #include "support/archive_builder.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
@@ -33,7 +34,12 @@ using namespace std::chrono_literals;
 
 const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 32 triangles
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
-const std::string kPng = "\x89PNG\r\n\x1a\n (the renderer does not read textures yet)";
+// A 2 x 2 red and white checker, a real PNG: the renderer decodes the texture.
+const std::string kPng = [] {
+  const std::vector<uint8_t> rgb = {255, 0, 0, 255, 255, 255, 255, 255, 255, 255, 0, 0};
+  const std::vector<uint8_t> png = encode_png_rgb8(rgb, 2, 2);
+  return std::string(png.begin(), png.end());
+}();
 
 // An OBJ model with its material and texture, zipped as a folder is zipped.
 std::vector<ArchiveMember> textured_obj_in(const std::string& top) {

@@ -1,0 +1,37 @@
+#pragma once
+// glTF's metallic-roughness material as a mix of two of our models, weighted by `metallic`:
+//   dielectric part (1 - metallic): the plastic model (bsdf_plastic.hpp), a GGX coat of index 1.5
+//     (F0 = 0.04, glTF's dielectric) over a diffuse base of the base colour;
+//   metallic part: GGX reflection with Schlick's Fresnel of F0 = base colour.
+// Both use GGX alpha = roughness^2, held at kMinModelAlpha or above: a glTF roughness of 0 renders as a
+// very sharp but not a delta lobe, so every model surface takes light samples and the mix stays one
+// smooth lobe set. A lobe is picked with probability (1 - metallic) / metallic.
+#include "engine/render/bsdf.hpp"
+#include "engine/render/bsdf_plastic.hpp"
+#include "engine/render/microfacet.hpp"
+
+namespace lp::render {
+
+inline constexpr float kMinModelAlpha = 1e-2f;
+inline constexpr float kModelDielectricIor = 1.5f;
+
+class MetallicRoughnessBsdf final : public Bsdf {
+ public:
+  // `roughness` is glTF's perceptual roughness; metallic and roughness are clamped to [0, 1].
+  MetallicRoughnessBsdf(Rgb base_color, float metallic, float roughness);
+  Rgb eval(Vec3 wo, Vec3 wi) const override;
+  float pdf(Vec3 wo, Vec3 wi) const override;
+  std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
+  bool has_non_delta_lobe() const override { return true; }
+
+ private:
+  Rgb eval_metal(Vec3 wo, Vec3 wi) const;
+  float pdf_metal(Vec3 wo, Vec3 wi) const;
+
+  Rgb base_;
+  float metallic_;
+  Ggx ggx_;
+  PlasticBsdf dielectric_;
+};
+
+}  // namespace lp::render

@@ -1,0 +1,37 @@
+#pragma once
+// A model's material at a hit: its textures looked up at one level per texture (the same for light and
+// BSDF sampling), and the shading normal its normal map gives.
+#include "engine/model/model.hpp"
+#include "engine/render/embree_scene.hpp"
+
+namespace lp::render {
+
+struct TextureLookup {
+  float surface_width = 0;  // the ray cone's width on the surface (world units)
+  bool mipmaps = true;      // false: level 0
+  bool normal_maps = true;  // false: the normal texture is ignored
+};
+
+struct ModelSurface {
+  Rgb base_color;
+  float metallic = 0;
+  float roughness = 1;  // perceptual
+  Rgb emission;
+  Vec3 shading_normal;  // unit, on the side of the hit's shading_normal
+};
+
+ModelSurface model_surface(const ModelMaterial& material, const SurfaceHit& hit, const TextureLookup& lookup);
+
+// The tangent-space normal a normal-map texel encodes, (2 rgb - 1) scaled in x and y. An 8-bit map
+// cannot hold 0.5: components within one 8-bit step of 0 are read as 0, so a flat map (128, 128, 255)
+// gives exactly (0, 0, 1) and renders like no map.
+Vec3 decode_normal_texel(Rgb texel, float scale);
+
+// The guard against shading normals that face away from the viewer: the normal is bent (not flipped)
+// towards the geometric one until the mirror direction of `wo` about it lies above the geometric
+// surface (Keller et al. 2017, "The Iray Light Transport Simulation and Rendering System", sec. A.3).
+// Bending keeps the shading continuous where flipping would jump. All vectors unit, world space, `ng`
+// and `ns` on the side of `wo` (dot(wo, ng) > 0). A normal that needs no bend is returned unchanged.
+Vec3 bend_shading_normal(Vec3 ns, Vec3 ng, Vec3 wo);
+
+}  // namespace lp::render

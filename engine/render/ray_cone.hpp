@@ -1,0 +1,44 @@
+#pragma once
+// Ray cones (Akenine-Moller et al., "Texture Level of Detail Strategies for Real-Time Ray Tracing",
+// Ray Tracing Gems ch. 20, 2019, and "Improved Shader and Texture Level of Detail Using Ray Cones",
+// JCGT 10(1), 2021) give each path vertex a footprint from which its texture level follows.
+//
+// Why cones rather than ray differentials: a cone is two floats per path and needs no derivatives of
+// the BSDF sampling, and it still widens with distance, obliquity, curvature and roughness, which is
+// what picks the level. The cone starts at the pinhole with the spread angle of one pixel; its width
+// at a hit is width + spread * t; there a texture sees the footprint width / |cos| on the surface,
+// which the triangle's uv density turns into texture coordinates (the level is log2 of that in texels).
+// A bounce widens the spread by the surface curvature (a mirror of curvature k turns a beam of width w
+// by k w, and reflection doubles it) and by the lobe: the sampled direction's pdf stands for a solid
+// angle 1 / pdf, the cone of that solid angle has spread 2 sqrt(1 / (pi pdf)); delta lobes add nothing.
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/constants.hpp"
+
+namespace lp::render {
+
+struct RayCone {
+  float width = 0;   // at the current origin
+  float spread = 0;  // full angle, radians
+
+  // The camera's cone: no width at the pinhole, one pixel's angle.
+  static RayCone from_pixel(float pixel_spread) { return {0.0f, pixel_spread}; }
+
+  void advance(float t) { width += spread * t; }
+
+  // The width the cone covers on a surface met at `cos_incidence` (cosine between ray and normal).
+  float surface_width(float cos_incidence) const {
+    return std::abs(width) / std::max(std::abs(cos_incidence), kMinCos);
+  }
+
+  void bounce(float curvature, float cos_incidence, bool delta, float pdf) {
+    spread += 2.0f * curvature * surface_width(cos_incidence);
+    if (!delta && pdf > 0) spread += 2.0f * std::sqrt(1.0f / (kPiF * pdf));
+    spread = std::min(spread, kPiF);
+  }
+
+  static constexpr float kMinCos = 1e-3f;
+};
+
+}  // namespace lp::render
