@@ -22,8 +22,8 @@ struct IntParameter {
   Range<int64_t> range;  // the values the flag accepts
   const char* help;
   Owner owner;
-  const char* default_text = nullptr;  // --help shows this instead of `fallback` (a computed default)
-  std::optional<ErrorCode> exceeded;   // the answer to a request over this limit, if a 4xx
+  const char* default_text = nullptr;   // --help shows this instead of `fallback` (a computed default)
+  std::optional<ErrorCode> exceeded{};  // the answer to a request over this limit, if a 4xx
 };
 
 // Limits on requests (the request parsers enforce them).
@@ -68,6 +68,14 @@ inline constexpr IntParameter kMaxUploadMb{
     ErrorCode::PayloadTooLarge};
 inline constexpr IntParameter kMaxEnvmaps{
     "max-envmaps", 64, {1, 100000}, "most maps held at once", Owner::Server};
+inline constexpr IntParameter kMaxAssets{
+    "max-assets", 64, {1, 100000}, "most model assets stored at once", Owner::Server, nullptr, std::nullopt};
+inline constexpr IntParameter kMaxAssetMb{
+    "max-asset-mb", 128,     {1, 1 << 20},       "largest model asset in MiB, as uploaded and as unpacked",
+    Owner::Server,  nullptr, ErrorCode::TooLarge};
+inline constexpr IntParameter kMaxAssetFiles{
+    "max-asset-files", 1000,    {1, 1 << 20},       "most members (files and folders) in an asset's archive",
+    Owner::Server,     nullptr, ErrorCode::TooLarge};
 inline constexpr IntParameter kMaxMemoryMb{
     "max-memory-mb",
     0,

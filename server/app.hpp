@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "engine/core/memory_budget.hpp"
+#include "server/asset_registry.hpp"
 #include "server/envmap_registry.hpp"
 #include "server/job_manager.hpp"
 #include "server/options.hpp"
@@ -26,6 +27,7 @@ struct App {
   MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
+  AssetRegistry assets;               // model files uploaded for scenes (stored_assets.hpp)
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
@@ -35,6 +37,7 @@ struct App {
         memory(options.max_memory_mb << 20),
         decoding(decoding_budget_bytes(options)),
         envmaps(options.max_envmaps),
+        assets(options.max_assets),
         renders(render_job_config(options)) {}
 };
 

@@ -18,55 +18,61 @@ namespace fs = std::filesystem;
   throw std::runtime_error("cannot " + what + " " + path.string() + ": " + std::strerror(errno));
 }
 
-// A descriptor closed on every path out.
-class Fd {
- public:
-  Fd(const fs::path& path, int flags, mode_t mode = 0) : fd_(::open(path.c_str(), flags | O_CLOEXEC, mode)) {}
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
-  int get() const { return fd_; }
+}  // namespace
 
- private:
-  int fd_;
-};
+NewFile::NewFile(fs::path path)
+    : path_(std::move(path)),
+      fd_(::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644)) {
+  if (fd_ < 0) fail("create", path_);
+}
 
-void write_all(const Fd& fd, std::span<const uint8_t> bytes, const fs::path& path) {
+NewFile::~NewFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void NewFile::write(std::span<const uint8_t> bytes) {
   while (!bytes.empty()) {
-    const ssize_t n = ::write(fd.get(), bytes.data(), bytes.size());
+    const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail("write", path);
+    if (n <= 0) fail("write", path_);
     bytes = bytes.subspan(size_t(n));
   }
 }
 
-fs::path temp_path_for(const fs::path& path) {
+void NewFile::finish() {
+  if (::fsync(fd_) != 0) fail("flush", path_);
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("close", path_);
+}
+
+fs::path temporary_path_for(const fs::path& path) {
   static std::atomic<uint64_t> counter{0};
   return path.parent_path() / (path.filename().string() + std::string(kTempFileMarker) +
                                std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1)));
 }
 
-}  // namespace
+void sync_directory(const fs::path& dir) {
+  const int fd = ::open((dir.empty() ? fs::path(".") : dir).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) fail("open the directory", dir);
+  const bool synced = ::fsync(fd) == 0;
+  ::close(fd);
+  if (!synced) fail("flush the directory", dir);
+}
 
 void write_file_atomically(const fs::path& path, std::span<const uint8_t> bytes) {
-  const fs::path temp = temp_path_for(path);
+  const fs::path temp = temporary_path_for(path);
   try {
-    {
-      Fd file(temp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (file.get() < 0) fail("create", temp);
-      write_all(file, bytes, temp);
-      if (::fsync(file.get()) != 0) fail("flush", temp);
-    }
+    NewFile file(temp);
+    file.write(bytes);
+    file.finish();
     if (::rename(temp.c_str(), path.c_str()) != 0) fail("rename to", path);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temp, ignored);
     throw;
   }
-  Fd dir(path.parent_path().empty() ? fs::path(".") : path.parent_path(), O_RDONLY | O_DIRECTORY);
-  if (dir.get() < 0 || ::fsync(dir.get()) != 0) fail("flush the directory of", path);
+  sync_directory(path.parent_path());
 }
 
 void write_file_atomically(const fs::path& path, std::string_view text) {

@@ -16,4 +16,28 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view t
 // Temporary files of writes that a crash cut short carry this marker in their name.
 inline constexpr std::string_view kTempFileMarker = ".tmp-";
 
+// A fresh name beside `path`, carrying kTempFileMarker, for a file or folder written before it is renamed
+// to `path`.
+std::filesystem::path temporary_path_for(const std::filesystem::path& path);
+
+// Flushes a folder's entries (files created, renamed or removed in it) to disk. Throws like the writes.
+void sync_directory(const std::filesystem::path& dir);
+
+// A file that must not exist yet (nor be a link), written in pieces and flushed to disk by finish().
+// Every member throws std::runtime_error naming the path and the system error.
+class NewFile {
+ public:
+  explicit NewFile(std::filesystem::path path);
+  ~NewFile();
+  NewFile(const NewFile&) = delete;
+  NewFile& operator=(const NewFile&) = delete;
+
+  void write(std::span<const uint8_t> bytes);
+  void finish();  // flushes and closes
+
+ private:
+  std::filesystem::path path_;
+  int fd_;
+};
+
 }  // namespace lp::server

@@ -64,16 +64,11 @@ void socket_address(const sockaddr_storage& addr, std::string& ip, int& port) {
   ip = text;
 }
 
-ConnectionStream::ConnectionStream(int fd, int stop_fd, std::string remote_ip, int remote_port,
+ConnectionStream::ConnectionStream(int fd, std::string remote_ip, int remote_port,
                                    std::chrono::seconds io_timeout)
-    : fd_(fd),
-      stop_fd_(stop_fd),
-      remote_ip_(std::move(remote_ip)),
-      remote_port_(remote_port),
-      io_timeout_(io_timeout) {}
+    : fd_(fd), remote_ip_(std::move(remote_ip)), remote_port_(remote_port), io_timeout_(io_timeout) {}
 
-ConnectionStream::Fill ConnectionStream::fill(std::chrono::steady_clock::time_point deadline,
-                                              bool wake_on_stop) {
+ConnectionStream::Fill ConnectionStream::fill(std::chrono::steady_clock::time_point deadline) {
   for (;;) {
     const size_t old = input_.size();
     input_.resize(old + kReadSize);
@@ -83,12 +78,11 @@ ConnectionStream::Fill ConnectionStream::fill(std::chrono::steady_clock::time_po
     if (n == 0) return Fill::Closed;
     if (errno == EINTR) continue;
     if (errno != EAGAIN && errno != EWOULDBLOCK) return Fill::Closed;
-    pollfd fds[2] = {{fd_, POLLIN, 0}, {stop_fd_, POLLIN, 0}};
-    const int r = poll(fds, wake_on_stop ? 2 : 1, ms_until(deadline));
+    pollfd fds[1] = {{fd_, POLLIN, 0}};
+    const int r = poll(fds, 1, ms_until(deadline));
     if (r < 0 && errno == EINTR) continue;
     if (r < 0) return Fill::Closed;
     if (r == 0) return Fill::TimedOut;
-    if (wake_on_stop && (fds[1].revents & POLLIN)) return Fill::Stopped;
   }
 }
 
@@ -141,7 +135,7 @@ ssize_t ConnectionStream::read(char* ptr, size_t size) {
 }
 
 bool ConnectionStream::fill_for_body() {
-  return fill(std::chrono::steady_clock::now() + io_timeout_, false) == Fill::Data;
+  return fill(std::chrono::steady_clock::now() + io_timeout_) == Fill::Data;
 }
 
 ssize_t ConnectionStream::read_buffered(char* ptr, size_t size, uint64_t limit) {
@@ -237,7 +231,7 @@ bool ConnectionStream::write_all(std::string_view data) {
 void ConnectionStream::close_gracefully(std::chrono::milliseconds linger) {
   shutdown(fd_, SHUT_WR);
   const auto deadline = std::chrono::steady_clock::now() + linger;
-  while (fill(deadline, false) == Fill::Data) consume(input().size());
+  while (fill(deadline) == Fill::Data) consume(input().size());
 }
 
 bool ConnectionStream::is_readable() const {

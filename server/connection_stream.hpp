@@ -1,7 +1,7 @@
 #pragma once
 // One client connection as httplib reads and writes it. The input buffer lives as long as the
 // connection, so bytes of a pipelined next request are kept. Reads and writes wait with poll() up to a
-// deadline; waiting for a request can also be cut short by the transport's stop signal. httplib reads
+// deadline. httplib reads
 // the checked head of each request (request_head.hpp) and then its body as framed here: at most
 // Content-Length bytes, or a chunked body decoded here and refused once it passes its limit.
 #include <httplib.h>
@@ -21,14 +21,13 @@ void socket_address(const sockaddr_storage& addr, std::string& ip, int& port);
 
 class ConnectionStream final : public httplib::Stream {
  public:
-  // `fd` is a connected non-blocking socket (not closed here); `stop_fd` becomes readable when the
-  // transport stops; `io_timeout` bounds each wait of a body read or a response write.
-  ConnectionStream(int fd, int stop_fd, std::string remote_ip, int remote_port,
-                   std::chrono::seconds io_timeout);
+  // `fd` is a connected non-blocking socket (not closed here); `io_timeout` bounds each wait of a body
+  // read or a response write.
+  ConnectionStream(int fd, std::string remote_ip, int remote_port, std::chrono::seconds io_timeout);
 
-  enum class Fill { Data, Closed, TimedOut, Stopped };
-  // Appends what the socket has to the input, waiting until `deadline` (or the stop signal, if asked).
-  Fill fill(std::chrono::steady_clock::time_point deadline, bool wake_on_stop);
+  enum class Fill { Data, Closed, TimedOut };
+  // Appends what the socket has to the input, waiting until `deadline` (a past deadline: no wait).
+  Fill fill(std::chrono::steady_clock::time_point deadline);
   std::string_view input() const { return std::string_view(input_).substr(input_pos_); }
   void consume(size_t n);
 
@@ -63,7 +62,6 @@ class ConnectionStream final : public httplib::Stream {
   bool send_after_held_head(std::string_view data);
 
   int fd_;
-  int stop_fd_;
   std::string remote_ip_;
   int remote_port_;
   std::chrono::seconds io_timeout_;

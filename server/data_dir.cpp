@@ -24,22 +24,27 @@ void check_data_dir(const Options& options) {
 fs::path resolve_in_data_dir(const Options& options, const std::string& relative, const std::string& field) {
   if (!options.data_dir)
     throw api::invalid_field(field, "the server was started without --data-dir; paths are not accepted");
+  return resolve_inside(*options.data_dir, relative, field, "the data directory");
+}
+
+fs::path resolve_inside(const fs::path& root_dir, const std::string& relative, const std::string& field,
+                        const std::string& where) {
   if (relative.empty()) throw api::invalid_field(field, "must not be empty");
   if (relative.find('\0') != std::string::npos) throw api::invalid_field(field, "must not contain NUL");
   const fs::path rel(relative);
   if (rel.is_absolute() || rel.has_root_name() || rel.has_root_directory())
-    throw api::invalid_field(field, "must be relative to the data directory, not absolute");
+    throw api::invalid_field(field, "must be relative to " + where + ", not absolute");
   for (const auto& part : rel)
     if (part == "..") throw api::invalid_field(field, "must not contain '..'");
   std::error_code ec;
-  const fs::path root = fs::canonical(*options.data_dir, ec);
-  if (ec) throw api::ApiError(api::ErrorCode::Internal, "the data directory is not accessible");
+  const fs::path root = fs::canonical(root_dir, ec);
+  if (ec) throw api::ApiError(api::ErrorCode::Internal, where + " is not accessible");
   const fs::path full = fs::weakly_canonical(root / rel, ec);
   if (ec) throw api::invalid_field(field, "cannot be resolved");
   const auto [root_end, full_it] = std::mismatch(root.begin(), root.end(), full.begin(), full.end());
-  if (root_end != root.end()) throw api::invalid_field(field, "resolves outside the data directory");
+  if (root_end != root.end()) throw api::invalid_field(field, "resolves outside " + where);
   if (!fs::is_regular_file(full, ec))
-    throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in the data directory");
+    throw api::invalid_field(field, "no file '" + api::excerpt(relative) + "' in " + where);
   return full;
 }
 

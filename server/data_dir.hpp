@@ -1,5 +1,6 @@
 #pragma once
-// Files named in requests (maps, meshes) come only from inside --data-dir.
+// Files named in requests (maps, meshes) come only from inside --data-dir (or, for meshes, an uploaded
+// asset's folder: mesh_paths.hpp).
 #include <filesystem>
 #include <string>
 
@@ -16,5 +17,9 @@ void check_data_dir(const Options& options);
 // no file: the path is a field of the request, not the resource it addresses.
 std::filesystem::path resolve_in_data_dir(const Options& options, const std::string& relative,
                                           const std::string& field);
+
+// The same checks inside any folder `root`, which messages call `where` ("the data directory").
+std::filesystem::path resolve_inside(const std::filesystem::path& root, const std::string& relative,
+                                     const std::string& field, const std::string& where);
 
 }  // namespace lp::server

@@ -9,14 +9,14 @@
 #include "api/api_error.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 #include "engine/envmap/procedural_sky.hpp"
+#include "server/resource_name.hpp"
 
 namespace lp::server {
 namespace {
 
 // Checked before decoding so a bad name costs nothing; add() checks again under its lock.
 void check_new_name(const App& app, const std::string& name) {
-  if (!valid_envmap_name(name))
-    throw api::invalid_field("name", "must be 1-64 characters of A-Z a-z 0-9 . _ - and not start with '.'");
+  if (!valid_resource_name(name)) throw api::invalid_field("name", std::string(kResourceNameRule));
   if (app.envmaps.find(name))
     throw api::ApiError(api::ErrorCode::Conflict, "an environment map named '" + name + "' exists");
 }

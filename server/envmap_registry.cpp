@@ -1,15 +1,8 @@
 #include "server/envmap_registry.hpp"
 
-#include <regex>
-
 #include "api/api_error.hpp"
 
 namespace lp::server {
-
-bool valid_envmap_name(const std::string& name) {
-  static const std::regex pattern(R"([A-Za-z0-9_-][A-Za-z0-9._-]{0,63})");
-  return std::regex_match(name, pattern);
-}
 
 std::shared_ptr<const EnvMapEntry> EnvMapRegistry::add(const std::string& name, std::string format,
                                                        std::string source,

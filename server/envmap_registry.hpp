@@ -22,6 +22,7 @@ struct EnvMapEntry {
   std::chrono::system_clock::time_point created;
 };
 
+// Ids are the map names (server/resource_name.hpp).
 class EnvMapRegistry {
  public:
   explicit EnvMapRegistry(int64_t max_entries) : max_entries_(max_entries) {}
@@ -39,8 +40,5 @@ class EnvMapRegistry {
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const EnvMapEntry>> entries_;
 };
-
-// Ids are the map names: 1-64 characters of [A-Za-z0-9._-], not starting with '.'.
-bool valid_envmap_name(const std::string& name);
 
 }  // namespace lp::server

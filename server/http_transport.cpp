@@ -21,10 +21,18 @@ namespace lp::server {
 namespace {
 
 using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
 
 // How long a connection closed after an error answer keeps reading (and dropping) what the client still
 // sends, so that the client reads the answer instead of a connection reset.
 constexpr auto kLinger = 1000ms;
+// HTTP workers waiting for ready connections, per core: two, so that a core has a request to work on while
+// the other worker of that core is in a system call (measured: one per core answers fewer requests).
+constexpr int kWorkersPerCore = 2;
+// How long every HTTP worker may be held by its request before another worker is started.
+constexpr auto kPatience = 5ms;
+// How often parked connections are checked for having waited too long.
+constexpr auto kSweepInterval = 100ms;
 
 thread_local const ConnectionStream* current_stream = nullptr;
 
@@ -53,16 +61,15 @@ int listen_on(const addrinfo& ai) {
   return -1;
 }
 
-// Answers a connection that is not served, without a thread: what the client sent so far is dropped
-// first, so that closing does not reset the connection before the answer is read.
-void refuse(int fd, const std::string& response) {
+// The last bytes sent on a connection that is ended without a worker: what the client sent so far is
+// dropped first, so that closing does not reset the connection before the answer is read.
+void say_last_words(int fd, const std::string& response) {
   char drop[16 * 1024];
   while (recv(fd, drop, sizeof drop, MSG_DONTWAIT) > 0) {
   }
   [[maybe_unused]] const ssize_t sent =
       send(fd, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
   shutdown(fd, SHUT_WR);
-  close(fd);
 }
 
 void answer_and_close(ConnectionStream& stream, const HeadError& error) {
@@ -81,7 +88,9 @@ bool request_body_over_limit() {
 }
 
 HttpTransport::HttpTransport(TransportLimits limits)
-    : limits_(limits), stop_fd_(eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
+    : limits_(limits),
+      connections_(limits.max_connections, limits.max_connections_per_client, limits.io_timeout),
+      stop_fd_(eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
   if (stop_fd_ < 0) throw std::runtime_error(std::string("eventfd: ") + std::strerror(errno));
   set_payload_max_length(size_t(limits.max_body));
   set_keep_alive_timeout(limits.keep_alive_timeout.count());
@@ -117,16 +126,32 @@ int HttpTransport::bind(const std::string& host, int port) {
 }
 
 void HttpTransport::run() {
+  const int workers = kWorkersPerCore * std::max(1, int(std::thread::hardware_concurrency()));
+  ElasticWorkers pool(
+      workers, kPatience, [this] { return connections_.wait_ready(); }, [this](uint64_t id) { serve(id); });
   accept_connections();
-  std::unique_lock lock(mutex_);
-  ended_.wait(lock, [this] { return closing_ && connections_.empty(); });
+  connections_.close_idle();
+  {
+    std::unique_lock lock(mutex_);
+    closed_.wait(lock, [this] { return closing_; });
+  }
+  connections_.wait_until_empty();
+  connections_.end_waits();
 }
 
+// Accepts connections, and ends those parked too long, until stop_accepting().
 void HttpTransport::accept_connections() {
   pollfd fds[2] = {{listen_fd_, POLLIN, 0}, {stop_fd_, POLLIN, 0}};
+  auto last_sweep = Clock::now();
   while (!stopping_) {
-    if (poll(fds, 2, -1) < 0 && errno != EINTR) break;
+    const int ready = poll(fds, 2, int(kSweepInterval.count()));
+    if (ready < 0 && errno != EINTR) break;
     if (fds[1].revents & POLLIN) break;
+    if (const auto now = Clock::now(); now - last_sweep >= kSweepInterval) {
+      connections_.expire(now, [this](Connection& c) { time_out(c); });
+      last_sweep = now;
+    }
+    if (ready <= 0 || !(fds[0].revents & POLLIN)) continue;
     sockaddr_storage addr{};
     socklen_t len = sizeof addr;
     const int fd =
@@ -147,115 +172,127 @@ void HttpTransport::accept_connections() {
 }
 
 void HttpTransport::admit(int fd, const std::string& ip, int port) {
-  std::string refusal;
-  {
-    std::lock_guard lock(mutex_);
-    if (int(connections_.size()) >= limits_.max_connections)
-      refusal =
-          fmt::format("{} connections are open, the server's limit (--max-connections)", connections_.size());
-    else if (per_client_[ip] >= limits_.max_connections_per_client)
-      refusal =
-          fmt::format("{} connections from {} are open, the limit per client (--max-connections-per-client)",
-                      per_client_[ip], ip);
-    if (refusal.empty()) {
-      connections_.insert(fd);
-      ++per_client_[ip];
-    } else if (per_client_[ip] == 0) {
-      per_client_.erase(ip);
-    }
-  }
-  if (!refusal.empty()) {
-    spdlog::debug("{}:{} refused: {}", ip, port, refusal);
-    return refuse(fd, raw_error_response(api::ErrorCode::TooManyConnections, refusal, "Retry-After: 1\r\n"));
-  }
   const int one = 1;
   setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-  try {
-    std::thread([this, fd, ip, port] {
-      serve(fd, ip, port);
-      release(fd, ip);
-    }).detach();
-  } catch (const std::system_error& e) {
-    spdlog::error("no thread for a connection from {}: {}", ip, e.what());
-    release(fd, ip);
-  }
+  const auto refusal = connections_.admit(fd, ip, port, Clock::now() + limits_.header_timeout);
+  if (!refusal) return;
+  spdlog::debug("{}:{} refused: {}", ip, port, *refusal);
+  say_last_words(fd, raw_error_response(api::ErrorCode::TooManyConnections, *refusal, "Retry-After: 1\r\n"));
+  close(fd);
 }
 
-void HttpTransport::release(int fd, const std::string& ip) {
-  std::lock_guard lock(mutex_);
-  connections_.erase(fd);
-  if (--per_client_[ip] <= 0) per_client_.erase(ip);
-  close(fd);  // under the lock, so close_connections() never shuts down a reused descriptor
-  ended_.notify_all();
+// A parked connection that waited too long: a request head that did not arrive in time is answered 408;
+// a connection that never sent a request, or stayed idle between requests, is just closed.
+void HttpTransport::time_out(Connection& c) const {
+  if (c.stream.input().empty()) return;
+  spdlog::debug("{}:{} answered 408: the request head was not complete in time", c.ip, c.port);
+  say_last_words(c.fd, raw_error_response(api::ErrorCode::RequestTimeout,
+                                          fmt::format("the request head did not arrive within {} s "
+                                                      "(--header-timeout-s)",
+                                                      limits_.header_timeout.count())));
 }
 
-void HttpTransport::serve(int fd, const std::string& ip, int port) {
-  ConnectionStream stream(fd, stop_fd_, ip, port, limits_.io_timeout);
-  current_stream = &stream;
-  auto start = std::chrono::steady_clock::now();  // the first request's head is timed from the accept
-  for (size_t served = 0;; ++served) {
-    RequestHead head;
-    if (!wait_for_request(stream, served == 0) || !read_head(stream, start, head)) break;
-    stream.begin_request(std::move(head.text), head.body);
-    const bool close = stopping_ || served + 1 >= keep_alive_max_count_;
-    bool closed = false;
-    const bool answered = process_request(stream, close, closed, {}) && stream.flush();
-    if (!answered || close || closed || !stream.body_finished()) {
-      stream.close_gracefully(kLinger);
+void HttpTransport::serve(uint64_t id) {
+  Connection* c = connections_.take(id);
+  if (!c) return;
+  if (serve_requests(*c))
+    connections_.park(*c, parked_deadline(*c));
+  else
+    connections_.release(*c);
+}
+
+// A request begun (a head arriving, or the first request of a connection) must be complete within the
+// header timeout from its start; an idle connection is kept for the keep-alive timeout.
+Clock::time_point HttpTransport::parked_deadline(const Connection& c) const {
+  return c.started ? *c.started + limits_.header_timeout : Clock::now() + limits_.keep_alive_timeout;
+}
+
+// Answers the requests whose bytes have arrived, in order; true if the connection stays open, to wait
+// for more bytes without a thread.
+bool HttpTransport::serve_requests(Connection& c) {
+  current_stream = &c.stream;
+  const size_t served_before = c.served;
+  bool open = false;
+  for (;;) {
+    const Next next = next_request(c, c.served == served_before);
+    if (next != Next::Request) {
+      open = next == Next::Idle;
       break;
     }
-    start = std::chrono::steady_clock::now();
+    RequestHead head;
+    const Head got = read_head(c, head);
+    if (got != Head::Complete) {
+      open = got == Head::Incomplete;
+      break;
+    }
+    c.stream.begin_request(std::move(head.text), head.body);
+    const bool close = stopping_ || c.served + 1 >= keep_alive_max_count_;
+    bool closed = false;
+    const bool answered = process_request(c.stream, close, closed, {}) && c.stream.flush();
+    ++c.served;
+    c.started.reset();
+    if (!answered || close || closed || !c.stream.body_finished()) {
+      c.stream.close_gracefully(kLinger);
+      break;
+    }
   }
   current_stream = nullptr;
+  return open;
 }
 
-// Waits for the first byte of the next request (the blank lines some clients send between requests
-// are skipped); false when the client closes, stays idle too long, or the transport stops.
-bool HttpTransport::wait_for_request(ConnectionStream& stream, bool first) {
-  const auto deadline =
-      std::chrono::steady_clock::now() + (first ? limits_.header_timeout : limits_.keep_alive_timeout);
+// Whether bytes of a request are at hand; the blank lines some clients send between requests are
+// skipped. When the connection has just become ready, what the socket has is read (without waiting);
+// after a response, only what was already read counts (pipelined requests): a connection whose next
+// request arrives later waits behind the connections that were ready before it.
+HttpTransport::Next HttpTransport::next_request(Connection& c, bool read) {
   for (;;) {
-    const auto input = stream.input();
-    const size_t blank = std::min(input.find_first_not_of("\r\n"), input.size());
-    stream.consume(blank);
-    if (!stream.input().empty()) return true;
-    if (stopping_ || stream.fill(deadline, true) != ConnectionStream::Fill::Data) return false;
+    const auto input = c.stream.input();
+    c.stream.consume(std::min(input.find_first_not_of("\r\n"), input.size()));
+    if (!c.stream.input().empty()) {
+      if (!c.started) c.started = Clock::now();
+      return Next::Request;
+    }
+    if (!read) return Next::Idle;
+    switch (c.stream.fill(Clock::time_point{})) {
+      case ConnectionStream::Fill::Data:
+        continue;
+      case ConnectionStream::Fill::TimedOut:
+        return Next::Idle;
+      default:
+        return Next::Gone;
+    }
   }
 }
 
-bool HttpTransport::read_head(ConnectionStream& stream, std::chrono::steady_clock::time_point start,
-                              RequestHead& head) {
-  HeadScanner scanner;
-  const auto deadline = start + limits_.header_timeout;
+// Reads the head as far as it has arrived; an incomplete head is resumed when more bytes arrive.
+HttpTransport::Head HttpTransport::read_head(Connection& c, RequestHead& head) {
   for (;;) {
-    switch (scanner.scan(stream.input())) {
+    switch (c.head.scan(c.stream.input())) {
       case HeadScanner::State::Error:
-        answer_and_close(stream, scanner.error());
-        return false;
+        answer_and_close(c.stream, c.head.error());
+        return Head::Failed;
       case HeadScanner::State::Complete: {
-        auto checked = check_request_head(stream.input().substr(0, scanner.head_length()), limits_.max_body);
-        stream.consume(scanner.head_length());
+        const size_t length = c.head.head_length();
+        c.head = HeadScanner{};
+        auto checked = check_request_head(c.stream.input().substr(0, length), limits_.max_body);
+        c.stream.consume(length);
         if (!checked.head) {
-          answer_and_close(stream, checked.error);
-          return false;
+          answer_and_close(c.stream, checked.error);
+          return Head::Failed;
         }
         head = std::move(*checked.head);
-        return true;
+        return Head::Complete;
       }
       case HeadScanner::State::NeedMore:
         break;
     }
-    switch (stream.fill(deadline, false)) {
+    switch (c.stream.fill(Clock::time_point{})) {
       case ConnectionStream::Fill::Data:
         break;
       case ConnectionStream::Fill::TimedOut:
-        answer_and_close(stream,
-                         {api::ErrorCode::RequestTimeout,
-                          fmt::format("the request head did not arrive within {} s (--header-timeout-s)",
-                                      limits_.header_timeout.count())});
-        return false;
+        return Head::Incomplete;
       default:
-        return false;
+        return Head::Failed;
     }
   }
 }
@@ -268,11 +305,13 @@ void HttpTransport::stop_accepting() {
 
 void HttpTransport::close_connections() {
   stop_accepting();
-  std::lock_guard lock(mutex_);
-  closing_ = true;
+  {
+    std::lock_guard lock(mutex_);
+    closing_ = true;
+  }
+  closed_.notify_all();
   svr_sock_ = INVALID_SOCKET;
-  for (const int fd : connections_) shutdown(fd, SHUT_RDWR);
-  ended_.notify_all();
+  connections_.shut_down_all();
 }
 
 }  // namespace lp::server

@@ -14,6 +14,7 @@
 #include "server/logging.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
+#include "server/stored_assets.hpp"
 #include "server/stored_maps.hpp"
 #include "server/stored_renders.hpp"
 
@@ -61,6 +62,7 @@ bool prepare(lp::server::App& app, lp::server::Server& server, int& port) {
     return false;
   }
   lp::server::restore_maps(app);
+  lp::server::restore_assets(app);  // before the renders, whose scenes may name assets
   lp::server::restore_renders(app);
   return true;
 }

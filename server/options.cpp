@@ -25,9 +25,11 @@ Usage: lightprobe-server [options]
   --cors-origin ORIGIN   an origin (http://host:port, or *) whose pages may call the API (repeatable);
                          without it, requests that change state from another origin get 403
   --data-dir DIR         maps, meshes and scene files loadable by relative path come only from here
+                         (mesh paths assets/NAME name uploaded model assets instead)
   --load NAME=PATH       load a map at start (repeatable); PATH absolute or relative to the working directory
   --web-dir DIR          static dashboard served at / (default: the source tree's web/); the API keeps /api
-  --state-dir DIR        uploaded maps and render jobs kept across restarts (default ./lightprobe-state)
+  --state-dir DIR        uploaded maps, model assets and render jobs kept across restarts
+                         (default ./lightprobe-state)
   --resume-interrupted   at start, resume the renders a crash or a stop interrupted
   --log-level NAME       least severe messages written: {levels} (default info)
   --list-routes          print every registered route (METHOD PATH) and exit
@@ -62,6 +64,9 @@ const std::vector<IntFlag>& int_flags() {
       request_limit<&api::RequestLimits::max_samples>(api::kMaxSamples),
       option<&Options::max_envmaps>(api::kMaxEnvmaps),
       request_limit<&api::RequestLimits::max_lights>(api::kMaxLights),
+      option<&Options::max_assets>(api::kMaxAssets),
+      option<&Options::max_asset_mb>(api::kMaxAssetMb),
+      option<&Options::max_asset_files>(api::kMaxAssetFiles),
       option<&Options::max_memory_mb>(api::kMaxMemoryMb),
       request_limit<&api::RequestLimits::max_render_width>(api::kMaxRenderWidth),
       request_limit<&api::RequestLimits::max_render_height>(api::kMaxRenderHeight),

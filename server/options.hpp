@@ -28,6 +28,9 @@ struct Options {
   int threads = int(api::kThreads.fallback);               // 0 = all cores
   int64_t max_upload_mb = api::kMaxUploadMb.fallback;
   int64_t max_envmaps = api::kMaxEnvmaps.fallback;
+  int64_t max_assets = api::kMaxAssets.fallback;
+  int64_t max_asset_mb = api::kMaxAssetMb.fallback;  // an upload, and its unpacked files together
+  int64_t max_asset_files = api::kMaxAssetFiles.fallback;
   api::RequestLimits
       limits;  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).

@@ -8,19 +8,19 @@
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/mesh_loader.hpp"
-#include "server/data_dir.hpp"
+#include "server/mesh_paths.hpp"
 
 namespace lp::server {
 
-int64_t resolve_meshes(render::SceneDesc& scene, const Options& options) {
+int64_t resolve_meshes(render::SceneDesc& scene, const App& app) {
   int64_t triangles = 0;
   render::MeshLimits limits;
-  limits.max_triangles = options.limits.max_mesh_triangles;
+  limits.max_triangles = app.options.limits.max_mesh_triangles;
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;
     const std::string field = fmt::format("scene.objects[{}].path", i);
-    mesh->path = resolve_in_data_dir(options, mesh->path.string(), field);
+    mesh->path = resolve_mesh_path(app, mesh->path.string(), field);
     try {
       triangles += render::check_obj_file(mesh->path, limits);
     } catch (const Error& e) {

@@ -4,13 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "api/render_request.hpp"
-#include "server/options.hpp"
+#include "server/app.hpp"
 
 namespace lp::server {
 
-// Mesh paths are relative to --data-dir and must stay inside it, and the files must pass the OBJ
-// pre-scan (engine/render/obj_prescan.hpp). Every problem is a 400 naming the field. Returns the
+// Mesh paths name an uploaded asset or a file in --data-dir (mesh_paths.hpp), and the files must pass the
+// OBJ pre-scan (engine/render/obj_prescan.hpp). Every problem is a 400 naming the field. Returns the
 // triangles of all the scene's meshes.
-int64_t resolve_meshes(render::SceneDesc& scene, const Options& options);
+int64_t resolve_meshes(render::SceneDesc& scene, const App& app);
 
 }  // namespace lp::server

@@ -1,25 +1,20 @@
 #include "server/render_thread_priority.hpp"
 
+#include <pthread.h>
+#include <sched.h>
 #include <spdlog/spdlog.h>
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 
 namespace lp::server {
-namespace {
-
-constexpr int kRenderNice = 10;  // about a tenth of a normal thread's CPU share when both want a core
-
-}  // namespace
-
 void lower_to_render_priority() {
   thread_local bool lowered = false;
   if (lowered) return;
   lowered = true;
-  if (setpriority(PRIO_PROCESS, id_t(gettid()), kRenderNice) != 0)
-    spdlog::debug("render thread priority unchanged: {}", std::strerror(errno));
+  const sched_param param{};
+  if (const int error = pthread_setschedparam(pthread_self(), SCHED_IDLE, &param))
+    spdlog::debug("render thread priority unchanged: {}", std::strerror(error));
 }
 
 RenderThreadPriority::RenderThreadPriority(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) {

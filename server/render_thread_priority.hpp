@@ -1,11 +1,13 @@
 #pragma once
-// Render threads yield the CPU to connection threads. A render keeps every core busy for minutes; the
-// threads answering requests wake for microseconds at a time. At equal OS priority the scheduler shares
-// the cores fairly between them, and a small request waits behind render time slices; at a lower nice
-// value for the render threads it runs at once. The runner thread of a job and each oneTBB worker that
-// joins a render arena are lowered the first time they render. An unprivileged process cannot raise a
-// thread's priority again, so a worker stays lowered when it later helps a request's parallel loop:
-// such loops are bulk work (large sample sets, decodes), and the request's own thread keeps its priority.
+// Render threads yield the CPU to the threads answering requests. A render keeps every core busy for
+// minutes; a request needs a core for microseconds at a time. At equal OS priority the scheduler shares
+// the cores fairly, and a request's thread, woken while a render thread runs, may wait for that thread's
+// time slice to end (milliseconds); even at a lower nice value it is not always run at once. Render
+// threads are therefore SCHED_IDLE: they run whenever a core has nothing else to do, and a woken request
+// thread always takes the core from them at once. The runner thread of a job and each oneTBB worker that
+// joins a render arena are lowered the first time they render. A worker stays lowered when it later helps
+// a request's parallel loop: such loops are bulk work (large sample sets, decodes), and the request's own
+// thread keeps its priority.
 #include <oneapi/tbb/task_arena.h>
 #include <oneapi/tbb/task_scheduler_observer.h>
 

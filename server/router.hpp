@@ -24,8 +24,9 @@ struct Route {
 using Handler = std::function<void(const httplib::Request&, httplib::Response&)>;
 
 // What a POST route reads from its body. A JSON body must say so (Content-Type: application/json):
-// a browser can send text/plain or a form to another site without asking, but not JSON.
-enum class PostBody { Json, JsonOrImage };
+// a browser can send text/plain or a form to another site without asking, but not JSON. A File is
+// taken as sent, whatever its Content-Type.
+enum class PostBody { Json, JsonOrImage, File };
 
 class Router {
  public:

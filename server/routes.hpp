@@ -13,6 +13,7 @@ Handler endpoint_of(App& app, Endpoint endpoint) {
 
 void register_meta_routes(Router& router, App& app);     // health, openapi
 void register_envmap_routes(Router& router, App& app);   // envmaps CRUD, image, distribution
+void register_asset_routes(Router& router, App& app);    // model assets: upload, list, metadata, delete
 void register_sample_routes(Router& router, App& app);   // samples, samples.png
 void register_render_routes(Router& router, App& app);   // render jobs: submit, status, image, events, cancel
 void register_fresnel_routes(Router& router, App& app);  // fresnel reflectance tables

@@ -18,9 +18,8 @@ api::Json metadata(const EnvMapEntry& e) {
 }
 
 InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
-  return *parse_enum<InvalidPixelPolicy>(api::query_enum(req.params, "invalid",
-                                                     enum_name(kDefaultInvalidPixelPolicy),
-                                                     enum_names<InvalidPixelPolicy>()));
+  return *parse_enum<InvalidPixelPolicy>(api::query_enum(
+      req.params, "invalid", enum_name(kDefaultInvalidPixelPolicy), enum_names<InvalidPixelPolicy>()));
 }
 
 // A JSON body (load by path) must say so; anything else is an image upload.

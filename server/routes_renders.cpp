@@ -49,7 +49,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto envmap = app.envmaps.find(request.envmap);
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
-  const int64_t triangles = resolve_meshes(request.scene, app.options);
+  const int64_t triangles = resolve_meshes(request.scene, app);
   auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
                                          app.state.get());

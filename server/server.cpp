@@ -75,6 +75,7 @@ Server::Server(App& app)
 
   register_meta_routes(router_, app_);
   register_envmap_routes(router_, app_);
+  register_asset_routes(router_, app_);
   register_sample_routes(router_, app_);
   register_render_routes(router_, app_);
   register_fresnel_routes(router_, app_);

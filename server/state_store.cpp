@@ -29,12 +29,13 @@ int lock_directory(const fs::path& dir) {
   return fd;
 }
 
+// Files and folders (an asset's, staged) of writes a crash cut short.
 void remove_temp_files(const fs::path& folder) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec))
     if (entry.path().filename().string().find(kTempFileMarker) != std::string::npos) {
       spdlog::warn("state: removing {} (a write cut short)", entry.path().string());
-      fs::remove(entry.path(), ec);
+      fs::remove_all(entry.path(), ec);
     }
 }
 
@@ -42,7 +43,7 @@ void remove_temp_files(const fs::path& folder) {
 
 StateStore::StateStore(fs::path dir) : dir_(std::move(dir)) {
   std::error_code ec;
-  for (const auto& folder : {dir_, maps_dir(), renders_dir()}) {
+  for (const auto& folder : {dir_, maps_dir(), renders_dir(), assets_dir()}) {
     fs::create_directories(folder, ec);
     if (!fs::is_directory(folder))
       throw std::runtime_error("cannot create the state directory " + folder.string() +
@@ -51,6 +52,7 @@ StateStore::StateStore(fs::path dir) : dir_(std::move(dir)) {
   lock_fd_ = lock_directory(dir_);
   remove_temp_files(maps_dir());
   remove_temp_files(renders_dir());
+  remove_temp_files(assets_dir());
 }
 
 StateStore::~StateStore() {

@@ -2,6 +2,7 @@
 // The state directory (--state-dir): what the server keeps across restarts. Layout:
 //   maps/NAME.json      a map's record; maps/NAME.FORMAT its file as uploaded (none for maps loaded by path)
 //   renders/ID.json     a render's record; renders/ID.SPP.exr its image after SPP samples per pixel
+//   assets/NAME.json    a model asset's record; assets/NAME/ its files (stored_assets.hpp)
 // Every file is written atomically (atomic_file.hpp); the records are the truth, and a file that no
 // record names is left over from a crash. One server at a time: the directory is locked while open.
 #include <filesystem>
@@ -26,6 +27,7 @@ class StateStore {
   const std::filesystem::path& dir() const { return dir_; }
   std::filesystem::path maps_dir() const { return dir_ / "maps"; }
   std::filesystem::path renders_dir() const { return dir_ / "renders"; }
+  std::filesystem::path assets_dir() const { return dir_ / "assets"; }
 
   // The *.json records of a folder that parse as JSON objects, by file name; the others are skipped
   // with a warning.
@@ -38,11 +40,14 @@ class StateStore {
 
   // Held while a map's files and its registry entry change together.
   std::mutex& maps_mutex() { return maps_mutex_; }
+  // The same for an asset's folder, record and registry entry.
+  std::mutex& assets_mutex() { return assets_mutex_; }
 
  private:
   std::filesystem::path dir_;
   int lock_fd_ = -1;
   std::mutex maps_mutex_;
+  std::mutex assets_mutex_;
 };
 
 }  // namespace lp::server

@@ -4,6 +4,7 @@
 
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
+#include "server/resource_name.hpp"
 
 namespace lp::server {
 namespace {
@@ -28,7 +29,7 @@ void restore_map(App& app, const nlohmann::json& record) {
   const auto name = record.at("name").get<std::string>();
   const auto source = record.at("source").get<std::string>();
   const auto file = record.at("file").get<std::string>();
-  if (!valid_envmap_name(name)) throw std::invalid_argument("not a map name: '" + name + "'");
+  if (!valid_resource_name(name)) throw std::invalid_argument("not a map name: '" + name + "'");
   if (source.rfind(kPathSource, 0) == 0) {
     const auto path = resolve_in_data_dir(app.options, source.substr(kPathSource.size()), "path");
     register_envmap_file(app, name, path, source);

@@ -111,7 +111,7 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
   int64_t triangles = 0;
   try {
     request = api::parse_render_request(record.request, app.options.limits);
-    triangles = resolve_meshes(request.scene, app.options);
+    triangles = resolve_meshes(request.scene, app);
   } catch (const api::ApiError& e) {
     throw cannot_resume(*job, api::ErrorCode::CannotResume, e.what());
   }

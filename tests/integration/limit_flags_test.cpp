@@ -9,6 +9,7 @@
 #include <string>
 
 #include "api/parameters.hpp"
+#include "support/archive_builder.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
@@ -19,18 +20,22 @@ namespace {
 using nlohmann::json;
 using test::Reply;
 
-// The low value of each limit flag, and a request just over it: an upload of a map file, or a JSON body
-// posted to `path`; `named` is a part of the error message.
+// The low value of each limit flag, and a request just over it: an upload of a map file or of a model
+// asset, or a JSON body posted to `path`; `named` is a part of the error message.
 struct Probe {
   std::string value;
-  std::string path;  // empty: upload `file`
+  std::string path;  // empty: upload `file`, or `asset` if it is not empty
   json body;
   std::string named;
   std::string file = "";
+  std::string asset = "";
 };
 
 Reply send(httplib::Client& c, const Probe& p) {
   if (!p.path.empty()) return test::reply(c.Post(p.path.c_str(), p.body.dump(), "application/json"));
+  if (!p.asset.empty())
+    return test::reply(
+        c.Post(("/api/v1/assets?name=" + p.named).c_str(), p.asset, "application/octet-stream"));
   const std::vector<uint8_t> bytes = test::read_bytes(test::envmap_path(p.file));
   std::string name = p.file;
   name[name.find('.')] = '_';
@@ -47,6 +52,21 @@ Probe render(const std::string& value, json fields, const std::string& named) {
   return {value, "/api/v1/renders", fields, named};
 }
 
+// A tar of a model and two more files: three members.
+std::string three_member_archive() {
+  return test::make_archive(test::ArchiveFormat::Tar, {test::file_member("model.obj", test::grid_obj(1)),
+                                                       test::file_member("model.mtl", "newmtl m\n"),
+                                                       test::file_member("albedo.png", "png")});
+}
+
+// A zip of a few KiB that unpacks to a model and 1.5 MiB of zeros (the upload stays under --max-upload-mb 1).
+std::string zip_unpacking_to_1_5_mib() {
+  test::ArchiveMember zeros = test::file_member("zeros.bin", "");
+  zeros.zero_bytes = 3 << 19;
+  return test::make_archive(test::ArchiveFormat::Zip,
+                            {test::file_member("model.obj", test::grid_obj(1)), zeros});
+}
+
 std::map<std::string, Probe> probes() {
   const json sphere = {{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}};
   const json mesh = {{"type", "mesh"}, {"path", "grid.obj"}};
@@ -61,6 +81,8 @@ std::map<std::string, Probe> probes() {
       {"max-render-depth", render("2", {{"max_depth", 3}}, "'max_depth'")},
       {"max-render-objects", render("1", {{"scene", {{"objects", {sphere, sphere}}}}}, "scene.objects")},
       {"max-mesh-triangles", render("10", {{"scene", {{"objects", {mesh}}}}}, "scene.objects[0].path")},
+      {"max-asset-mb", {"1", "", {}, "max-asset-mb", "", zip_unpacking_to_1_5_mib()}},
+      {"max-asset-files", {"2", "", {}, "max-asset-files", "", three_member_archive()}},
   };
 }
 

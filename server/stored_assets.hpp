@@ -1,0 +1,32 @@
+#pragma once
+// Model assets in the state directory: assets/NAME/ holds an asset's files (a .glb as uploaded, or an
+// archive unpacked), assets/NAME.json its record naming the model file. The folder is renamed into place
+// whole before the record is written and removed after it, so the record is the truth: at start every
+// recorded asset is registered again, and a folder no record names is a leftover and removed.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "server/app.hpp"
+
+namespace lp::server {
+
+// Stores an upload as the asset `name`: the name is held (400, 409, 507), the upload checked against
+// --max-asset-mb (413), unpacked under --max-asset-mb and --max-asset-files (archive_unpacker.hpp),
+// renamed into place, recorded and registered. Throws api::ApiError.
+std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& name,
+                                                  std::span<const uint8_t> upload);
+
+// Unregisters an asset and deletes its record and files; false if there is no such asset.
+bool remove_asset(App& app, const std::string& name);
+
+// Registers every recorded asset whose files are there (others are skipped with a warning and kept for
+// a later start), and removes the folders no record names.
+void restore_assets(App& app);
+
+// The folder of asset `name`.
+std::filesystem::path asset_folder(const StateStore& store, const std::string& name);
+
+}  // namespace lp::server
