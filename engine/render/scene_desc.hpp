@@ -108,6 +108,8 @@ struct RenderSettings {
   int spp = 64;
   int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
+  bool mipmaps = true;      // texture and map lookups at the ray footprint's level (false: the finest level)
+  bool normal_maps = true;  // materials' normal maps perturb the shading normal (false: ignored)
   MeshLimits mesh_limits;
   void validate(const std::string& prefix) const;
 };
