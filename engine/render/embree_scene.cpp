@@ -121,7 +121,7 @@ void EmbreeScene::add_plane(uint32_t id, const PlaneObject& p, float half_size) 
 void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& limits) {
   Object& o = objects_[id];
   o.kind = Object::Kind::Mesh;
-  o.mesh = load_obj_mesh(m, limits);
+  o.mesh = m.model ? placed_model_mesh(*m.model, m) : load_obj_mesh(m, limits);
   triangle_count_ += o.mesh.triangle_count();
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

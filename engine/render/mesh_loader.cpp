@@ -10,6 +10,7 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
+#include "engine/model/model.hpp"
 #include "engine/render/obj_prescan.hpp"
 
 namespace lp::render {
@@ -46,6 +47,12 @@ void check_transform(const MeshObject& m) {
     throw Error(ErrorKind::InvalidArgument, "mesh: scale must be > 0 and the transform finite");
 }
 
+Vec3 place(Vec3 p, const MeshObject& m) {
+  p = p * m.scale;
+  p = rotate_axis(rotate_axis(rotate_axis(p, 0, m.rotate_deg.x), 1, m.rotate_deg.y), 2, m.rotate_deg.z);
+  return p + m.translate;
+}
+
 }  // namespace
 
 int64_t check_obj_file(const std::filesystem::path& path, const MeshLimits& limits) {
@@ -74,9 +81,7 @@ TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name
   for (size_t i = 0; i + 2 < v.size(); i += 3) {
     Vec3 p{v[i], v[i + 1], v[i + 2]};
     if (!finite(p)) throw Error(ErrorKind::Corrupt, "mesh " + name + ": a vertex is not finite");
-    p = p * m.scale;
-    p = rotate_axis(rotate_axis(rotate_axis(p, 0, m.rotate_deg.x), 1, m.rotate_deg.y), 2, m.rotate_deg.z);
-    mesh.positions.push_back(p + m.translate);
+    mesh.positions.push_back(place(p, m));
   }
   size_t index_count = 0;
   for (const auto& shape : reader.GetShapes()) index_count += shape.mesh.indices.size();
@@ -93,6 +98,17 @@ TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name
   }
   mesh.indices.resize(mesh.indices.size() / 3 * 3);
   if (mesh.indices.empty()) throw Error(ErrorKind::Corrupt, "mesh " + name + " has no triangles");
+  return mesh;
+}
+
+TriangleMesh placed_model_mesh(const Model& model, const MeshObject& m) {
+  check_transform(m);
+  if (model.indices.empty())
+    throw Error(ErrorKind::Corrupt, "mesh " + m.path.filename().string() + " has no triangles");
+  TriangleMesh mesh;
+  mesh.positions.reserve(model.positions.size());
+  for (const Vec3& p : model.positions) mesh.positions.push_back(place(p, m));
+  mesh.indices = model.indices;
   return mesh;
 }
 

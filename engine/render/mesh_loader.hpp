@@ -23,6 +23,9 @@ TriangleMesh load_obj_mesh(const MeshObject& mesh, const MeshLimits& limits);
 // The same from the file's text; `name` appears in messages.
 TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& mesh,
                                 const MeshLimits& limits);
+// The triangles of a loaded model, placed by the mesh object's transform. Throws lp::Error
+// InvalidArgument (bad transform) or Corrupt (no triangles).
+TriangleMesh placed_model_mesh(const Model& model, const MeshObject& mesh);
 // Reads the file and refuses what load_obj_mesh would refuse before parsing (see obj_prescan.hpp),
 // so that a request can be answered at once. Returns the number of triangles the mesh will have.
 int64_t check_obj_file(const std::filesystem::path& path, const MeshLimits& limits);

@@ -2,6 +2,7 @@
 // What to render, as plain data: the contract between the request parser (api/) and the renderer.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -10,6 +11,10 @@
 #include "engine/core/enum_table.hpp"
 #include "engine/core/limits.hpp"
 #include "engine/core/vec3.hpp"
+
+namespace lp {
+struct Model;
+}
 
 namespace lp::render {
 
@@ -57,6 +62,9 @@ struct MeshObject {
   Vec3 translate;
   float scale = 1;
   Vec3 rotate_deg;  // rotations about x, then y, then z
+  // The model at `path` in its own coordinates, loaded by the caller (the server loads it when a
+  // request arrives); when null the renderer loads `path` as an OBJ mesh.
+  std::shared_ptr<const Model> model = nullptr;
   void validate(const std::string& prefix) const;
 };
 struct SceneObject {

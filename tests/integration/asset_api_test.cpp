@@ -15,6 +15,7 @@
 
 #include "support/archive_builder.hpp"
 #include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -33,7 +34,7 @@ using namespace std::chrono_literals;
 
 const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 32 triangles
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
-const std::string kPng = "\x89PNG\r\n\x1a\n (the renderer does not read textures yet)";
+const std::string kPng = test::checker_png(4);
 
 // An OBJ model with its material and texture, zipped as a folder is zipped.
 std::vector<ArchiveMember> textured_obj_in(const std::string& top) {
@@ -66,17 +67,7 @@ class AssetServer {
                        {"scene", {{"objects", {mesh}}, {"camera", camera}}}};
     return test::reply(client_->Post("/api/v1/renders", body.dump(), "application/json"));
   }
-  // Polls a render until it is no longer queued or running (a deadline only keeps a broken server from
-  // hanging the suite; nothing is timed).
-  json finished_render(const std::string& id) const {
-    for (auto deadline = std::chrono::steady_clock::now() + 120s; std::chrono::steady_clock::now() < deadline;
-         std::this_thread::sleep_for(20ms)) {
-      const json st = get("/api/v1/renders/" + id).body_json();
-      if (st["status"] != "queued" && st["status"] != "running") return st;
-    }
-    ADD_FAILURE() << "render " << id << " did not finish";
-    return {};
-  }
+  json finished_render(const std::string& id) const { return test::finished_render(*client_, id); }
   fs::path assets_dir() const { return state_.path() / "assets"; }
   const fs::path& state_dir() const { return state_.path(); }
   void stop() {
