@@ -54,6 +54,10 @@ class ModelServer {
     if (r.status != 202) return {};
     return test::finished_render(*client_, r.body_json()["id"]);
   }
+  httplib::Client* client() const { return client_.get(); }
+  Reply post(const json& body) const {
+    return test::reply(client_->Post("/api/v1/renders", body.dump(), "application/json"));
+  }
   bool alive() const { return server_->alive(); }
 
  private:
@@ -116,6 +120,28 @@ TEST(ModelRender, AModelFileReplacedOnDiskIsLoadedAgain) {
   expect_refused_path(s.render("grid.obj"), "the replaced file");
   std::ofstream(file) << test::grid_obj(2);
   EXPECT_EQ(s.render_to_end("grid.obj")["status"], "done");
+}
+
+TEST(ModelRender, TheTexturedPresetRendersToDoneWithMipmapsAndNormalMapsOnAndOff) {
+  auto& s = model_server();
+  for (const auto& [mipmaps, normal_maps] : {std::pair{true, true}, {false, true}, {true, false}}) {
+    const json body = {{"envmap", "default"},
+                       {"width", 24},
+                       {"height", 16},
+                       {"spp", 2},
+                       {"mipmaps", mipmaps},
+                       {"normal_maps", normal_maps},
+                       {"scene", {{"preset", "textured"}}}};
+    const Reply r = s.post(body);
+    ASSERT_EQ(r.status, 202) << r.body;
+    const json st = test::finished_render(*s.client(), r.body_json()["id"]);
+    EXPECT_EQ(st["status"], "done") << st.dump();
+    EXPECT_EQ(st["scene"]["preset"], "textured");
+    EXPECT_EQ(st["mipmaps"], mipmaps);
+    EXPECT_EQ(st["normal_maps"], normal_maps);
+    const Reply image = s.get("/api/v1/renders/" + r.body_json()["id"].get<std::string>() + "/image");
+    EXPECT_EQ(image.status, 200);
+  }
 }
 
 TEST(ModelRender, OtherFileTypesAreRefusedNamingTheExtensions) {
