@@ -44,15 +44,6 @@ fs::path ModelFiles::resolve(const std::string& relative) const {
   return full;
 }
 
-bool ModelFiles::exists(const std::string& relative) const {
-  try {
-    std::error_code ec;
-    return fs::is_regular_file(resolve(relative), ec);
-  } catch (const Error&) {
-    return false;
-  }
-}
-
 std::vector<uint8_t> ModelFiles::read(const std::string& relative, const std::string& what) {
   const fs::path path = resolve(relative);
   auto bytes = read_file(path, max_bytes_ - bytes_);

@@ -21,7 +21,6 @@ class ModelFiles {
   // Throws lp::Error: InvalidArgument (a path outside the folder, or any path for a model from
   // memory), NotFound, TooLarge.
   std::vector<uint8_t> read(const std::string& relative, const std::string& what);
-  bool exists(const std::string& relative) const;
   // A key naming the file's content for the texture cache: its canonical path, size and modification time.
   std::string cache_key(const std::string& relative) const;
 

@@ -30,6 +30,10 @@ std::filesystem::path fuzz_corpus_path(const std::string& target, const std::str
   return std::filesystem::path(LIGHTPROBE_FUZZ_CORPUS) / target / file;
 }
 
+std::filesystem::path model_path(const std::string& file) {
+  return std::filesystem::path(LIGHTPROBE_TEST_DATA) / "models" / file;
+}
+
 std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open " + path.string());

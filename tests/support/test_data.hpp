@@ -12,6 +12,8 @@ std::vector<std::string> real_envmap_files();                // every file in ..
 std::vector<uint8_t> read_bytes(const std::filesystem::path& path);
 // A committed input of a fuzz target's corpus: tests/fuzz/corpus/<target>/<file> (reproducers included).
 std::filesystem::path fuzz_corpus_path(const std::string& target, const std::string& file);
+// A committed model test input: tests/data/models/<file>.
+std::filesystem::path model_path(const std::string& file);
 // OBJ text of a bumpy n x n grid in the plane z = 0: (n + 1)^2 vertices, 2 n^2 triangles.
 std::string grid_obj(int n);
 // A PNG of an n x n checkerboard of 1-pixel red and white squares.
