@@ -169,7 +169,9 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
     object.shape = p;
   } else {
     reject_unknown_fields(o, {"type", "path", "transform", "material"}, prefix);
-    object.shape = parse_mesh(o, prefix);
+    MeshObject mesh = parse_mesh(o, prefix);
+    mesh.model_materials = !member(o, "material");  // a material given overrides the model's own
+    object.shape = std::move(mesh);
   }
   object.material = parse_material(object_member(o, "material", prefix), field_name(prefix, "material"));
   return object;
@@ -228,7 +230,8 @@ Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
-  reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed"});
+  reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed",
+                               "mipmaps", "normal_maps"});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");
@@ -242,6 +245,8 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
       bounded_int(body, "max_depth", d.max_depth, limits::kMaxDepth.min, limits.max_render_depth);
   r.settings.mesh_limits.max_triangles = limits.max_mesh_triangles;
   r.settings.seed = uint64_t(json_int(body, "seed", int64_t(d.seed), 0, std::numeric_limits<int64_t>::max()));
+  r.settings.mipmaps = json_bool(body, "mipmaps", d.mipmaps);
+  r.settings.normal_maps = json_bool(body, "normal_maps", d.normal_maps);
   as_invalid_field([&] {
     r.scene.validate("scene");
     r.lighting.validate("lighting");

@@ -8,6 +8,7 @@
 #include "server/asset_registry.hpp"
 #include "server/envmap_registry.hpp"
 #include "server/job_manager.hpp"
+#include "server/model_cache.hpp"
 #include "server/options.hpp"
 #include "server/state_store.hpp"
 
@@ -28,6 +29,7 @@ struct App {
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
   AssetRegistry assets;               // model files uploaded for scenes (stored_assets.hpp)
+  ModelCache models;                  // the models of scenes' mesh objects, loaded when a request names them
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
@@ -38,6 +40,7 @@ struct App {
         decoding(decoding_budget_bytes(options)),
         envmaps(options.max_envmaps),
         assets(options.max_assets),
+        models(memory),
         renders(render_job_config(options)) {}
 };
 

@@ -195,6 +195,8 @@ void RenderJob::describe(nlohmann::json& out) const {
   out["height"] = s.height;
   out["max_depth"] = s.max_depth;
   out["seed"] = s.seed;
+  out["mipmaps"] = s.mipmaps;
+  out["normal_maps"] = s.normal_maps;
   out["envmap"] = request_.envmap;
   out["scene"] = request_.preset ? nlohmann::json{{"preset", *request_.preset}}
                                  : nlohmann::json{{"objects", request_.scene.objects.size()}};

@@ -122,12 +122,14 @@ struct RenderSettings {
   void validate(const std::string& prefix) const;
 };
 
-// The built-in scenes: a diffuse sphere on a plane, a row of materials, a white furnace.
-enum class ScenePreset { Sphere, Materials, Furnace };
+// The built-in scenes: a diffuse sphere on a plane, a row of materials, a white furnace, a textured,
+// normal-mapped model on a textured ground (textured_preset.hpp).
+enum class ScenePreset { Sphere, Materials, Furnace, Textured };
 constexpr auto enum_entries(ScenePreset) {
   return std::to_array<EnumEntry<ScenePreset>>({{ScenePreset::Sphere, "sphere"},
                                                 {ScenePreset::Materials, "materials"},
-                                                {ScenePreset::Furnace, "furnace"}});
+                                                {ScenePreset::Furnace, "furnace"},
+                                                {ScenePreset::Textured, "textured"}});
 }
 
 SceneDesc preset_scene(ScenePreset preset);

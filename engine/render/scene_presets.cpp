@@ -1,6 +1,7 @@
 // The scenes named in the API. All are z-up, seen from the -y side.
 #include "engine/fresnel/metals.hpp"
 #include "engine/render/scene_desc.hpp"
+#include "engine/render/textured_preset.hpp"
 
 namespace lp::render {
 namespace {
@@ -35,6 +36,19 @@ SceneDesc materials_scene() {
   return s;
 }
 
+// A brick-textured, normal-mapped sphere on a checkerboard ground, seen from above the ground so that
+// the far squares are small: the scene for comparing mipmaps and normal maps on and off.
+SceneDesc textured_scene() {
+  SceneDesc s;
+  s.camera = {{0, -5, 1.2f}, {0, 0, -0.3f}, {0, 0, 1}, 45};
+  MeshObject model;
+  model.path = "textured";
+  model.model = textured_preset_model();
+  model.model_materials = true;
+  s.objects = {{model, DiffuseMaterial{}}};
+  return s;
+}
+
 }  // namespace
 
 SceneDesc preset_scene(ScenePreset preset) {
@@ -45,6 +59,8 @@ SceneDesc preset_scene(ScenePreset preset) {
       return materials_scene();
     case ScenePreset::Furnace:
       return furnace_scene();
+    case ScenePreset::Textured:
+      return textured_scene();
   }
   return sphere_scene();
 }

@@ -13,9 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "engine/image/image_io.hpp"
 #include "support/archive_builder.hpp"
 #include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -34,12 +34,7 @@ using namespace std::chrono_literals;
 
 const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 32 triangles
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
-// A 2 x 2 red and white checker, a real PNG: the renderer decodes the texture.
-const std::string kPng = [] {
-  const std::vector<uint8_t> rgb = {255, 0, 0, 255, 255, 255, 255, 255, 255, 255, 0, 0};
-  const std::vector<uint8_t> png = encode_png_rgb8(rgb, 2, 2);
-  return std::string(png.begin(), png.end());
-}();
+const std::string kPng = test::checker_png(4);
 
 // An OBJ model with its material and texture, zipped as a folder is zipped.
 std::vector<ArchiveMember> textured_obj_in(const std::string& top) {
@@ -72,17 +67,7 @@ class AssetServer {
                        {"scene", {{"objects", {mesh}}, {"camera", camera}}}};
     return test::reply(client_->Post("/api/v1/renders", body.dump(), "application/json"));
   }
-  // Polls a render until it is no longer queued or running (a deadline only keeps a broken server from
-  // hanging the suite; nothing is timed).
-  json finished_render(const std::string& id) const {
-    for (auto deadline = std::chrono::steady_clock::now() + 120s; std::chrono::steady_clock::now() < deadline;
-         std::this_thread::sleep_for(20ms)) {
-      const json st = get("/api/v1/renders/" + id).body_json();
-      if (st["status"] != "queued" && st["status"] != "running") return st;
-    }
-    ADD_FAILURE() << "render " << id << " did not finish";
-    return {};
-  }
+  json finished_render(const std::string& id) const { return test::finished_render(*client_, id); }
   fs::path assets_dir() const { return state_.path() / "assets"; }
   const fs::path& state_dir() const { return state_.path(); }
   void stop() {

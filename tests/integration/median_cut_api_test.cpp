@@ -1,14 +1,12 @@
 // POST /api/v1/envmaps/{id}/median-cut and GET /api/v1/envmaps/{id}/median-cut.png on the real server:
 // the lights' shape and totals, caching, the pictures, and every kind of bad input.
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
-
-#include <stb_image.h>
 
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
@@ -23,11 +21,16 @@ using nlohmann::json;
 using test::Reply;
 
 Reply post(const test::ServerProcess& s, const std::string& map, const std::string& body) {
-  return test::reply(s.client()->Post(("/api/v1/envmaps/" + map + "/median-cut").c_str(), body, "application/json"));
+  return test::reply(
+      s.client()->Post(("/api/v1/envmaps/" + map + "/median-cut").c_str(), body, "application/json"));
 }
-Reply post(const std::string& map, const std::string& body) { return post(test::shared_server(), map, body); }
+Reply post(const std::string& map, const std::string& body) {
+  return post(test::shared_server(), map, body);
+}
 
-Reply get(const test::ServerProcess& s, const std::string& path) { return test::reply(s.client()->Get(path.c_str())); }
+Reply get(const test::ServerProcess& s, const std::string& path) {
+  return test::reply(s.client()->Get(path.c_str()));
+}
 Reply get_png(const std::string& map, const std::string& query) {
   return get(test::shared_server(), "/api/v1/envmaps/" + map + "/median-cut.png" + query);
 }
@@ -44,8 +47,8 @@ struct Png {
 Png decode_png(const std::string& body) {
   Png png;
   int channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(body.data()), int(body.size()), &png.width,
-                                          &png.height, &channels, 3);
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(body.data()), int(body.size()),
+                                          &png.width, &png.height, &channels, 3);
   if (!pixels) return {};
   png.rgb.assign(pixels, pixels + size_t(png.width) * png.height * 3);
   stbi_image_free(pixels);
@@ -58,11 +61,13 @@ void expect_field_error(const Reply& r, const std::string& field, const std::str
   if (r.status != 400) return;
   const json e = r.body_json()["error"];
   EXPECT_EQ(e["code"], "invalid_field") << what << ": " << r.body;
-  EXPECT_NE(e["message"].get<std::string>().find("'" + field + "'"), std::string::npos) << what << ": " << r.body;
+  EXPECT_NE(e["message"].get<std::string>().find("'" + field + "'"), std::string::npos)
+      << what << ": " << r.body;
 }
 
 TEST(MedianCutApi, LightsOfForestAddUpToTheMapPower) {
-  const Reply r = post("forest_exr", R"({"count":64,"placement":"centroid","split":"median","luminance":"average"})");
+  const Reply r =
+      post("forest_exr", R"({"count":64,"placement":"centroid","split":"median","luminance":"average"})");
   ASSERT_EQ(r.status, 200) << r.body;
   EXPECT_EQ(r.type().rfind("application/json", 0), 0u);
   const json j = r.body_json();
@@ -95,7 +100,8 @@ TEST(MedianCutApi, LightsOfForestAddUpToTheMapPower) {
     EXPECT_NEAR(dz, std::cos(theta), 1e-5);
     for (int c = 0; c < 3; ++c) sum[c] += l["power"][c].get<double>();
     const double e = l["energy"];
-    EXPECT_NEAR(e, (l["power"][0].get<double>() + l["power"][1].get<double>() + l["power"][2].get<double>()) / 3,
+    EXPECT_NEAR(e,
+                (l["power"][0].get<double>() + l["power"][1].get<double>() + l["power"][2].get<double>()) / 3,
                 1e-9 * e);
     emin = std::min(emin, e), emax = std::max(emax, e);
   }
@@ -113,7 +119,8 @@ TEST(MedianCutApi, EveryOptionAndAnyCount) {
   for (const char* placement : {"centroid", "centroid_squared", "center"})
     for (const char* split : {"median", "variance"})
       for (const char* luminance : {"average", "rec709"}) {
-        const json body = {{"count", 100}, {"placement", placement}, {"split", split}, {"luminance", luminance}};
+        const json body = {
+            {"count", 100}, {"placement", placement}, {"split", split}, {"luminance", luminance}};
         const Reply r = post("studio_hdr", body.dump());
         ASSERT_EQ(r.status, 200) << body.dump() << ": " << r.body;
         const json j = r.body_json();
@@ -223,7 +230,8 @@ TEST(MedianCutApi, BadQueriesNameTheField) {
 
 // --max-lights sets the limit; a map smaller than the count asked for is a 400 on `count` too.
 TEST(MedianCutApi, LimitsFromTheFlagAndTheMapSize) {
-  test::ServerProcess server({"--max-lights", "16", "--load", "forest=" + test::envmap_path("forest.exr").string()});
+  test::ServerProcess server(
+      {"--max-lights", "16", "--load", "forest=" + test::envmap_path("forest.exr").string()});
   expect_field_error(post(server, "forest", R"({"count":17})"), "count", "count above --max-lights 16");
   const Reply ok = post(server, "forest", R"({"count":16})");
   ASSERT_EQ(ok.status, 200) << ok.body;

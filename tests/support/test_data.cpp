@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "engine/image/image_io.hpp"
+
 namespace lp::test {
 
 std::filesystem::path shared_data() {
@@ -48,6 +50,17 @@ std::string grid_obj(int n) {
       out << "f " << a << ' ' << b << ' ' << d << "\nf " << a << ' ' << d << ' ' << c << '\n';
     }
   return out.str();
+}
+
+std::string checker_png(int n) {
+  std::vector<uint8_t> rgb;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const uint8_t other = (x + y) % 2 ? 255 : 30;
+      rgb.insert(rgb.end(), {255, other, other});
+    }
+  const auto png = encode_png_rgb8(rgb, n, n);
+  return {png.begin(), png.end()};
 }
 
 }  // namespace lp::test

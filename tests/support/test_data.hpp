@@ -16,5 +16,7 @@ std::filesystem::path fuzz_corpus_path(const std::string& target, const std::str
 std::filesystem::path model_path(const std::string& file);
 // OBJ text of a bumpy n x n grid in the plane z = 0: (n + 1)^2 vertices, 2 n^2 triangles.
 std::string grid_obj(int n);
+// A PNG of an n x n checkerboard of 1-pixel red and white squares.
+std::string checker_png(int n);
 
 }  // namespace lp::test

@@ -45,6 +45,8 @@ TEST(RenderRequest, DefaultsAreTheSpherePresetAndTheDocumentedSettings) {
   EXPECT_EQ(r.settings.spp, 64);
   EXPECT_EQ(r.settings.max_depth, 8);
   EXPECT_EQ(r.settings.seed, 1u);
+  EXPECT_TRUE(r.settings.mipmaps);
+  EXPECT_TRUE(r.settings.normal_maps);
   EXPECT_EQ(r.lighting.mode, LightingMode::EnvMap);
   EXPECT_EQ(r.lighting.lights, 64);
   EXPECT_TRUE(r.lighting.visible);
@@ -225,6 +227,17 @@ TEST(RenderRequest, BadTopLevelSceneCameraAndLightingFields) {
   expect_field_error(R"({"envmap":"e","lighting":{"intensity":-1}})", "lighting.intensity");
   expect_field_error(R"({"envmap":"e","lighting":{"visible":"yes"}})", "lighting.visible");
   expect_field_error(R"({"envmap":"e","lighting":{"rotation":90}})", "lighting.rotation");
+}
+
+TEST(RenderRequest, MipmapsAndNormalMapsTurnOffEachAlone) {
+  const auto no_mips = parse(R"({"envmap":"e","mipmaps":false})");
+  EXPECT_FALSE(no_mips.settings.mipmaps);
+  EXPECT_TRUE(no_mips.settings.normal_maps);
+  const auto no_normals = parse(R"({"envmap":"e","normal_maps":false,"mipmaps":true})");
+  EXPECT_TRUE(no_normals.settings.mipmaps);
+  EXPECT_FALSE(no_normals.settings.normal_maps);
+  expect_field_error(R"({"envmap":"e","mipmaps":"off"})", "mipmaps");
+  expect_field_error(R"({"envmap":"e","normal_maps":0})", "normal_maps");
 }
 
 TEST(RenderRequest, AnEmptyObjectListIsAValidScene) {

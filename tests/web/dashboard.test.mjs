@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, existsSync } from 'node:fs';
+import { mkdtempSync, rmSync, existsSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -13,6 +13,7 @@ import { chromium } from 'playwright-core';
 const here = path.dirname(fileURLToPath(import.meta.url));
 const envmaps = path.resolve(here, '../../../shared/data/envmaps');
 const serverBin = process.env.LIGHTPROBE_SERVER_BIN;
+const boxGlb = '/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb'; // assimp-testmodels
 const screenshot = process.env.LIGHTPROBE_SCREENSHOT || '/tmp/lightprobe-dashboard.png';
 const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
@@ -230,6 +231,48 @@ test('a small render streams its progress to done and shows its image', async ()
   await eventually('the events stream in the server log', () => server.log.join('').includes(`GET /api/v1/renders/${id}/events 200`));
   await page.locator(`#render-jobs tr[data-id="${id}"][data-status=done]`).waitFor();
   assert.ok(await page.locator('#renders-panel .error').isHidden());
+});
+
+// Both figures of the side-by-side view end done with a 48-pixel-wide image and a caption naming the
+// option's state and the render time; the two newest jobs are the request with the option on and off.
+async function expectComparison(option, label) {
+  for (const on of ['true', 'false']) {
+    const figure = page.locator(`#render-compare figure[data-option=${option}][data-on=${on}]`);
+    await figure.and(page.locator('[data-status=done]')).waitFor({ timeout: 45000 });
+    await waitForImage(`#render-compare figure[data-on=${on}] img`, 48);
+    assert.match(await figure.locator('figcaption').innerText(), new RegExp(`^${label} ${on === 'true' ? 'on' : 'off'} · done · [0-9.e-]+ s$`));
+  }
+  const { renders } = await (await fetch(`${server.base}/api/v1/renders`)).json();
+  const [first, second] = renders.slice(-2);
+  assert.deepEqual([first[option], second[option], first.status, second.status], [true, false, 'done', 'done']);
+  return [first, second];
+}
+
+test('two renders side by side: the textured preset with mipmaps on and off, an uploaded model with normal maps on and off', async () => {
+  const upload = await fetch(`${server.base}/api/v1/assets?name=box`, { method: 'POST', body: readFileSync(boxGlb) });
+  assert.equal(upload.status, 201, await upload.text());
+  const form = page.locator('#render-form');
+  await form.locator('[name=preset]').selectOption('textured');
+  await form.locator('[name=width]').fill('48');
+  await form.locator('[name=height]').fill('32');
+  await form.locator('[name=spp]').fill('2');
+  await form.locator('[name=compare]').selectOption('mipmaps');
+  await page.locator('#render-submit').click();
+  const textured = await expectComparison('mipmaps', 'mipmaps');
+  assert.deepEqual(textured.map((j) => [j.scene.preset, j.spp_done]), [['textured', 2], ['textured', 2]]);
+
+  await form.locator('[name=preset]').focus(); // lists the uploaded assets
+  await page.locator('#render-assets option[value="asset:box"]').waitFor({ state: 'attached' });
+  await form.locator('[name=preset]').selectOption('asset:box');
+  await form.locator('[name=compare]').selectOption('normal_maps');
+  await page.locator('#render-submit').click();
+  const box = await expectComparison('normal_maps', 'normal maps');
+  assert.deepEqual(box.map((j) => j.scene.objects), [1, 1]);
+  assert.ok(await page.locator('#renders-panel .error').isHidden());
+
+  // Back to one render of the sphere for the next test.
+  await form.locator('[name=compare]').selectOption('');
+  await form.locator('[name=preset]').selectOption('sphere');
 });
 
 test('a long render shows its passes while running and can be cancelled', async () => {

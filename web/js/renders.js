@@ -1,8 +1,10 @@
-// The Renders panel: submit a preset scene, follow the job through its server-sent events (progress
+// The Renders panel: submit a preset scene or an uploaded model (optionally two renders side by side,
+// an option on and off), follow the job through its server-sent events (progress
 // bar, image refreshed after every pass), cancel it, and list every job.
 import { api, apiUrl, errorOf, loadImage, API } from './api.js';
 import { $, el, num, bigNum, busy, formValues, showError } from './dom.js';
 import { state } from './state.js';
+import { compareRenders } from './render_compare.js';
 
 const panel = () => $('#renders-panel');
 const ACTIVE = new Set(['queued', 'running']);
@@ -115,6 +117,22 @@ function watch(job) {
   };
 }
 
+// The scene a choice of the scene menu names: a preset, or "asset:NAME" for an uploaded model.
+function sceneOf(choice) {
+  if (!choice.startsWith('asset:')) return { preset: choice };
+  return { objects: [{ type: 'mesh', path: `assets/${choice.slice('asset:'.length)}` }] };
+}
+
+// Lists the uploaded assets in the scene menu, keeping the choice when it is still there.
+export async function refreshAssets() {
+  const list = await busy(panel(), () => api('/assets'));
+  if (!list) return;
+  const select = $('#render-form').preset;
+  const chosen = select.value;
+  $('#render-assets').replaceChildren(...list.assets.map((a) => el('option', { value: `asset:${a.name}` }, a.name)));
+  select.value = [...select.options].some((o) => o.value === chosen) ? chosen : select.options[0].value;
+}
+
 async function submit(event) {
   event.preventDefault();
   if (!state.map) {
@@ -124,7 +142,14 @@ async function submit(event) {
   const v = formValues($('#render-form'));
   const lighting = { mode: v.mode, rotation_deg: v.rotation_deg };
   if (v.mode.startsWith('median_cut')) lighting.lights = v.lights;
-  const body = { envmap: state.map, scene: { preset: v.preset }, lighting, width: v.width, height: v.height, spp: v.spp, max_depth: v.max_depth };
+  const body = { envmap: state.map, scene: sceneOf(v.preset), lighting, width: v.width, height: v.height, spp: v.spp,
+    max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps };
+  if (v.compare) {
+    await busy(panel(), () => compareRenders($('#render-compare'), body, v.compare, exposure()));
+    refreshJobs();
+    return;
+  }
+  $('#render-compare').hidden = true;
   const job = await busy(panel(), () => api('/renders', { method: 'POST', json: body }));
   if (!job) return;
   watch(job);
@@ -171,5 +196,7 @@ export function initRenders() {
   form.mode.addEventListener('change', () => { form.lights.disabled = !form.mode.value.startsWith('median_cut'); });
   form.lights.disabled = true;
   $('#render-cancel').addEventListener('click', cancel);
+  form.preset.addEventListener('focus', refreshAssets);
   refreshJobs();
+  refreshAssets();
 }

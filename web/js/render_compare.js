@@ -1,0 +1,42 @@
+// Two renders side by side: the same request with one option (mipmaps or normal maps) on and off,
+// each followed to its end and shown with its render time.
+import { api, apiUrl, loadImage } from './api.js';
+import { $, el, num } from './dom.js';
+
+const ACTIVE = new Set(['queued', 'running']);
+const LABELS = { mipmaps: 'mipmaps', normal_maps: 'normal maps' };
+
+let comparison = 0; // the latest comparison; an older one stops updating the page
+
+async function follow(job, figure, label, current, exposure) {
+  const caption = $('figcaption', figure);
+  for (;;) {
+    if (!current()) return;
+    caption.textContent = `${label} · ${job.status} · ${num(job.elapsed_s, 3)} s`;
+    figure.dataset.status = job.status;
+    if (!ACTIVE.has(job.status)) break;
+    await new Promise((r) => setTimeout(r, 250));
+    job = await api(`/renders/${job.id}`);
+  }
+  if (job.image_available)
+    await loadImage($('img', figure), apiUrl(`/renders/${job.id}/image`, { format: 'png', exposure }), current);
+  if (job.error) caption.textContent += ` · ${job.error.code}: ${job.error.message}`;
+}
+
+// Submits `body` with `option` true and false and shows both renders in `box`. Resolves once both
+// have ended; rejects with the API's error.
+export async function compareRenders(box, body, option, exposure) {
+  const mine = ++comparison;
+  const current = () => mine === comparison;
+  const sides = [true, false].map((on) => {
+    const label = `${LABELS[option]} ${on ? 'on' : 'off'}`;
+    const figure = el('figure', { dataset: { option, on: String(on) } }, el('img', { alt: label }), el('figcaption', {}, label));
+    return { on, label, figure };
+  });
+  box.replaceChildren(...sides.map((s) => s.figure));
+  box.hidden = false;
+  const jobs = [];
+  for (const s of sides) jobs.push(await api('/renders', { method: 'POST', json: { ...body, [option]: s.on } }));
+  await Promise.all(sides.map((s, i) => follow(jobs[i], s.figure, s.label, current, exposure)));
+  return jobs;
+}
