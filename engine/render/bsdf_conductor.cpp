@@ -14,13 +14,13 @@ Rgb ConductorBsdf::fresnel(float cos_i) const {
 Rgb ConductorBsdf::eval(Vec3 wo, Vec3 wi) const {
   if (delta_specular_ || wo.z <= 0 || wi.z <= 0) return {};
   const Vec3 h = normalize(wo + wi);
-  return fresnel(dot(wo, h)) * (ggx_.d(h) * ggx_.g(wo, wi) / (4.0f * wo.z));
+  return fresnel(dot(wo, h)) * ggx_.reflection(wo, wi, h);
 }
 
 float ConductorBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (delta_specular_ || wo.z <= 0 || wi.z <= 0) return 0;
   const Vec3 h = normalize(wo + wi);
-  return ggx_.visible_normal_pdf(wo, h) / (4.0f * dot(wo, h));
+  return ggx_.reflection_pdf(wo, h);
 }
 
 std::optional<BsdfSample> ConductorBsdf::sample(Vec3 wo, float, Point2 u) const {
@@ -31,7 +31,7 @@ std::optional<BsdfSample> ConductorBsdf::sample(Vec3 wo, float, Point2 u) const 
   if (wo_h <= 0) return std::nullopt;
   const Vec3 wi = reflect(wo, h);
   if (wi.z <= 0) return std::nullopt;
-  const float p = ggx_.visible_normal_pdf(wo, h) / (4.0f * wo_h);
+  const float p = ggx_.reflection_pdf(wo, h);
   if (!(p > 0)) return std::nullopt;
   const Rgb weight = fresnel(wo_h) * (ggx_.g(wo, wi) / ggx_.g1(wo));
   return BsdfSample{wi, weight, p};

@@ -32,12 +32,12 @@ MetallicRoughnessBsdf::MetallicRoughnessBsdf(Rgb base_color, float metallic, flo
 
 Rgb MetallicRoughnessBsdf::eval_metal(Vec3 wo, Vec3 wi) const {
   const Vec3 h = normalize(wo + wi);
-  return schlick(base_, dot(wo, h)) * (ggx_.d(h) * ggx_.g(wo, wi) / (4.0f * wo.z));
+  return schlick(base_, dot(wo, h)) * ggx_.reflection(wo, wi, h);
 }
 
 float MetallicRoughnessBsdf::pdf_metal(Vec3 wo, Vec3 wi) const {
   const Vec3 h = normalize(wo + wi);
-  return ggx_.visible_normal_pdf(wo, h) / (4.0f * dot(wo, h));
+  return ggx_.reflection_pdf(wo, h);
 }
 
 Rgb MetallicRoughnessBsdf::eval(Vec3 wo, Vec3 wi) const {

@@ -48,13 +48,13 @@ float PlasticBsdf::specular_probability(float fresnel_o) const {
 
 Rgb PlasticBsdf::eval_specular(Vec3 wo, Vec3 wi) const {
   const Vec3 h = normalize(wo + wi);
-  const float f = fresnel(dot(wo, h)) * ggx_.d(h) * ggx_.g(wo, wi) / (4.0f * wo.z);
+  const float f = fresnel(dot(wo, h)) * ggx_.reflection(wo, wi, h);
   return {f, f, f};
 }
 
 float PlasticBsdf::pdf_specular(Vec3 wo, Vec3 wi) const {
   const Vec3 h = normalize(wo + wi);
-  return ggx_.visible_normal_pdf(wo, h) / (4.0f * dot(wo, h));
+  return ggx_.reflection_pdf(wo, h);
 }
 
 Rgb PlasticBsdf::eval_diffuse(Vec3 wo, Vec3 wi) const {

@@ -27,6 +27,11 @@ class Ggx {
   Vec3 sample_visible_normal(Vec3 wo, float u1, float u2) const;
   float visible_normal_pdf(Vec3 wo, Vec3 m) const;
 
+  // Reflection off the microfacets of half vector h = normalize(wo + wi), without its Fresnel factor:
+  // D(h) G(wo, wi) / (4 wo.z); and the density of wi when h is sampled as a visible normal of wo.
+  float reflection(Vec3 wo, Vec3 wi, Vec3 h) const { return d(h) * g(wo, wi) / (4.0f * wo.z); }
+  float reflection_pdf(Vec3 wo, Vec3 h) const { return visible_normal_pdf(wo, h) / (4.0f * dot(wo, h)); }
+
  private:
   float alpha_;
 };
