@@ -40,6 +40,10 @@ inline constexpr Range<double> kFovDeg{1.0, 179.0};  // vertical field of view
 
 // Lighting.
 inline constexpr Range<double> kIntensity{0.0, 1e6};
+// The widest importance grid a render samples on: 2048 x 1024 cells (2 M; 74 MiB with their radiance
+// and sampling tables) resolve a sun as well as any map needs, where an 8K map's own grid would take
+// 32 M cells and 1.2 GiB.
+inline constexpr int kDefaultImportanceMaxWidth = 2048;
 
 // Render settings: bounces of a path; a request's limit (--max-render-depth) lies inside.
 inline constexpr Range<int64_t> kMaxDepth{0, 1024};

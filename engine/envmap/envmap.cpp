@@ -15,7 +15,9 @@ struct Power {
   Power operator+(const Power& o) const { return {r + o.r, g + o.g, b + o.b}; }
 };
 
-Rgb compute_power(const Image& image) {
+}  // namespace
+
+Rgb EnvMap::power_of(const Image& image) {
   const int w = image.width(), h = image.height();
   const Power total = tbb::parallel_reduce(
       tbb::blocked_range<int>(0, h), Power{},
@@ -33,16 +35,16 @@ Rgb compute_power(const Image& image) {
   return {float(total.r), float(total.g), float(total.b)};
 }
 
-}  // namespace
-
 EnvMap::EnvMap(Image image, InvalidPixelPolicy policy)
     : image_(std::move(image)), cache_(std::make_shared<Cache>()) {
   if (image_.empty()) throw Error(ErrorKind::InvalidData, "environment map is empty");
   invalid_pixels_ = sanitize_radiance(image_, policy);
-  power_ = compute_power(image_);
+  power_ = power_of(image_);
 }
 
-Rgb EnvMap::mean_radiance() const { return power_ / float(4.0 * kPi); }
+Rgb EnvMap::mean_radiance() const {
+  return power_ / float(4.0 * kPi);
+}
 
 float EnvMap::max_luminance(LuminanceMode mode) const {
   const auto d = image_.data();
@@ -55,7 +57,9 @@ Rgb EnvMap::radiance(latlong::Uv uv) const {
   return image_.at(latlong::pixel_x(uv.u, width()), latlong::pixel_y(uv.v, height()));
 }
 
-Rgb EnvMap::radiance(Vec3 direction) const { return radiance(latlong::uv(direction)); }
+Rgb EnvMap::radiance(Vec3 direction) const {
+  return radiance(latlong::uv(direction));
+}
 
 std::shared_ptr<const EnvMapSampler> EnvMap::sampler(LuminanceMode mode) const {
   return derived<EnvMapSampler>(std::string("sampler:") + enum_name(mode),

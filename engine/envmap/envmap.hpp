@@ -30,6 +30,7 @@ class EnvMap {
 
   // Integral of radiance over the sphere: sum of L * pixel solid angle (exact per-row solid angle).
   Rgb power() const { return power_; }
+  static Rgb power_of(const Image& image);
   // What the policy changed on load.
   const InvalidPixelReport& invalid_pixels() const { return invalid_pixels_; }
   // Solid-angle-weighted mean radiance: power / (4 pi).

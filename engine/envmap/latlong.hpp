@@ -19,7 +19,9 @@ inline Vec3 direction_from_angles(float theta, float phi) {
   return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
 }
 
-inline Vec3 direction(Uv uv) { return direction_from_angles(uv.v * kPiF, uv.u * 2.0f * kPiF); }
+inline Vec3 direction(Uv uv) {
+  return direction_from_angles(uv.v * kPiF, uv.u * 2.0f * kPiF);
+}
 
 // u in [0, 1), v in [0, 1]; `d` need not be normalised.
 inline Uv uv(Vec3 d) {
@@ -33,8 +35,12 @@ inline Uv uv(Vec3 d) {
 }
 
 // The pixel containing (u, v), clamped to the grid.
-inline int pixel_x(float u, int width) { return std::clamp(int(u * float(width)), 0, width - 1); }
-inline int pixel_y(float v, int height) { return std::clamp(int(v * float(height)), 0, height - 1); }
+inline int pixel_x(float u, int width) {
+  return std::clamp(int(u * float(width)), 0, width - 1);
+}
+inline int pixel_y(float v, int height) {
+  return std::clamp(int(v * float(height)), 0, height - 1);
+}
 
 // Exact solid angle of one pixel of row y: (2 pi / W) * (cos theta_top - cos theta_bottom).
 inline double pixel_solid_angle(int y, int width, int height) {
@@ -42,6 +48,8 @@ inline double pixel_solid_angle(int y, int width, int height) {
   return (2.0 * kPi / width) * (std::cos(t0) - std::cos(t1));
 }
 
-inline double row_centre_theta(int y, int height) { return kPi * (y + 0.5) / height; }
+inline double row_centre_theta(int y, int height) {
+  return kPi * (y + 0.5) / height;
+}
 
 }  // namespace lp::latlong

@@ -12,10 +12,12 @@ constexpr float kSunElevationDeg = 35.0f, kSunAzimuthDeg = 60.0f, kSunRadiusDeg 
 Rgb sky_radiance(Vec3 d, Vec3 sun) {
   const float deg = kPiF / 180.0f;
   if (dot(d, sun) >= std::cos(kSunRadiusDeg * deg)) return {2000.0f, 1900.0f, 1700.0f};
-  if (d.z < 0) return Rgb{0.25f, 0.22f, 0.18f} * (0.6f + 0.4f * (1.0f + d.z));  // ground, darker straight down
+  if (d.z < 0)
+    return Rgb{0.25f, 0.22f, 0.18f} * (0.6f + 0.4f * (1.0f + d.z));  // ground, darker straight down
   const float horizon = std::pow(1.0f - d.z, 4.0f);
   const float glow = std::pow(std::max(0.0f, dot(d, sun)), 8.0f);
-  return Rgb{0.25f, 0.45f, 0.95f} * (1.0f - horizon) + Rgb{0.9f, 0.9f, 1.0f} * horizon + Rgb{1.5f, 1.2f, 0.8f} * glow;
+  return Rgb{0.25f, 0.45f, 0.95f} * (1.0f - horizon) + Rgb{0.9f, 0.9f, 1.0f} * horizon +
+         Rgb{1.5f, 1.2f, 0.8f} * glow;
 }
 
 }  // namespace

@@ -5,7 +5,8 @@ namespace {
 
 constexpr int kHalf = 2;  // 5x5 squares
 
-// Calls f(x, y) for each pixel of the 5x5 square around (cx, cy): wraps across the phi seam, clips at the poles.
+// Calls f(x, y) for each pixel of the 5x5 square around (cx, cy): wraps across the phi seam, clips at the
+// poles.
 template <class F>
 void for_each_in_square(int cx, int cy, int width, int height, F&& f) {
   for (int dy = -kHalf; dy <= kHalf; ++dy) {
@@ -17,7 +18,8 @@ void for_each_in_square(int cx, int cy, int width, int height, F&& f) {
 
 }  // namespace
 
-std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone) {
+std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSample> samples,
+                                       const ToneMap& tone) {
   std::vector<uint8_t> rgb = tone_map_rgb8(map.image(), tone);
   const int w = map.width(), h = map.height();
   for (const EnvSample& s : samples)
@@ -28,7 +30,8 @@ std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSam
   return rgb;
 }
 
-std::vector<uint8_t> plot_sample_windows(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone) {
+std::vector<uint8_t> plot_sample_windows(const EnvMap& map, std::span<const EnvSample> samples,
+                                         const ToneMap& tone) {
   Image windows(map.width(), map.height());
   for (const EnvSample& s : samples)
     for_each_in_square(s.pixel_x, s.pixel_y, map.width(), map.height(),

@@ -16,8 +16,10 @@ inline int64_t sample_plot_bytes(int64_t width, int64_t height) {
 }
 
 // The tone-mapped map with a 5x5 pure-blue square centred on each sampled pixel.
-std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone);
+std::vector<uint8_t> plot_sample_marks(const EnvMap& map, std::span<const EnvSample> samples,
+                                       const ToneMap& tone);
 // Black except a 5x5 window of the map's own radiance around each sample, then tone mapped.
-std::vector<uint8_t> plot_sample_windows(const EnvMap& map, std::span<const EnvSample> samples, const ToneMap& tone);
+std::vector<uint8_t> plot_sample_windows(const EnvMap& map, std::span<const EnvSample> samples,
+                                         const ToneMap& tone);
 
 }  // namespace lp

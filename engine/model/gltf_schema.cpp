@@ -140,8 +140,22 @@ class Checker {
     });
   }
 
+  // glTF 1.0 differs from 2.0 throughout: a 1.0 file (asset.version "1.0", or the number 1 that early
+  // exporters wrote) is refused as such, not for the first property whose type changed.
+  void version(const json& root) const {
+    const json* asset = field(root, "asset");
+    const json* v = asset && asset->is_object() ? field(*asset, "version") : nullptr;
+    if (!v) return;
+    const bool one = v->is_string() ? v->get_ref<const std::string&>().starts_with("1.")
+                                    : v->is_number() && v->get<double>() >= 1 && v->get<double>() < 2;
+    if (one)
+      throw Error(ErrorKind::Unsupported,
+                  fmt::format("glTF {}: a glTF 1.0 file (asset.version): only glTF 2.0 is supported", name_));
+  }
+
   void document(const json& root) const {
     object(root, "the document");
+    version(root);
     child(root, "asset", "", [&](const json& a, const std::string& p) { string(a, "version", p); });
     if (!field(root, "asset")) fail("asset", "is missing");
     index(root, "scene", "");
@@ -223,8 +237,11 @@ std::string_view json_text(std::span<const uint8_t> bytes, const std::string& na
     throw Error(ErrorKind::Corrupt, "glb " + name + ": " + why);
   };
   if (bytes.size() < 20) corrupt("shorter than its header");
-  if (read_u32(bytes.data() + 4) != 2)
-    corrupt(fmt::format("version {} is not 2", read_u32(bytes.data() + 4)));
+  const uint32_t version = read_u32(bytes.data() + 4);
+  if (version == 1)
+    throw Error(ErrorKind::Unsupported,
+                "glb " + name + ": a binary glTF 1.0 file (header version 1): only glTF 2.0 is supported");
+  if (version != 2) corrupt(fmt::format("version {} is not 2", version));
   if (read_u32(bytes.data() + 8) > bytes.size()) corrupt("its length is past the end of the file");
   const uint32_t length = read_u32(bytes.data() + 12);
   if (std::memcmp(chars + 16, "JSON", 4) != 0) corrupt("the first chunk is not JSON");

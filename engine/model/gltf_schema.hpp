@@ -12,7 +12,8 @@ namespace lp::gltf {
 inline constexpr int kMaxJsonDepth = 64;
 
 // `bytes`: a .gltf file, or a .glb whose JSON chunk is checked. Throws lp::Error(Corrupt) naming the
-// property by its path ("materials[0].normalTexture.scale must be a number").
+// property by its path ("materials[0].normalTexture.scale must be a number"), or lp::Error(Unsupported)
+// for a glTF 1.0 file.
 void check_schema(std::span<const uint8_t> bytes, const std::string& name);
 
 }  // namespace lp::gltf

@@ -54,6 +54,19 @@ void repair_zero_normals(MeshPart& p) {
   }
 }
 
+// Copies of the vertices split_mirrored_vertices adds, appended to every per-vertex array.
+void split_mirrored(MeshPart& p) {
+  const std::vector<uint32_t> sources = split_mirrored_vertices(p.uvs, p.indices);
+  p.positions.reserve(p.positions.size() + sources.size());
+  p.normals.reserve(p.normals.size() + sources.size());
+  p.uvs.reserve(p.uvs.size() + sources.size());
+  for (uint32_t source : sources) {
+    p.positions.push_back(p.positions[source]);
+    p.normals.push_back(p.normals[source]);
+    p.uvs.push_back(p.uvs[source]);
+  }
+}
+
 }  // namespace
 
 size_t MeshPart::triangle_count() const {
@@ -67,7 +80,10 @@ void complete_part(MeshPart& p) {
   }
   repair_zero_normals(p);
   if (p.uvs.empty()) p.uvs.assign(p.positions.size(), Point2{0, 0});
-  if (p.tangents.empty()) p.tangents = generate_tangents(p.positions, p.normals, p.uvs, p.indices);
+  if (p.tangents.empty()) {
+    split_mirrored(p);
+    p.tangents = generate_tangents(p.positions, p.normals, p.uvs, p.indices);
+  }
 }
 
 void append_part(Model& model, const MeshPart& p, const Mat4& to_world) {

@@ -21,7 +21,8 @@ struct MeshPart {
 
 // Flat normals when there are none (every triangle gets its own three vertices), zero-length normals
 // replaced by the area-weighted normal of the vertex's triangles, UVs (0, 0) when there are none,
-// tangents generated when there are none. Positions, normals and UVs must be finite.
+// tangents generated when there are none (a vertex shared by triangles of opposite UV handedness is
+// first split in two). Positions, normals and UVs must be finite.
 void complete_part(MeshPart& part);
 
 // The part's vertices through `to_world` (normals by the inverse transpose; a mirroring transform

@@ -13,6 +13,7 @@
 #include "engine/core/limits.hpp"
 #include "engine/core/point2.hpp"
 #include "engine/core/vec3.hpp"
+#include "engine/model/model_files.hpp"
 #include "engine/texture/texture.hpp"
 #include "engine/texture/texture_transform.hpp"
 #include "engine/texture/wrap_mode.hpp"
@@ -71,6 +72,9 @@ struct Model {
   std::vector<uint32_t> indices;             // three per triangle, counter-clockwise seen from the front
   std::vector<uint32_t> triangle_materials;  // per triangle, an index into `materials`
   std::vector<ModelMaterial> materials;
+  // The files it was read from, the model file first (none for a model from memory): a copy kept in
+  // memory is stale once one of them has changed.
+  std::vector<FileStamp> files;
 
   size_t vertex_count() const { return positions.size(); }
   size_t triangle_count() const { return indices.size() / 3; }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <system_error>
@@ -26,7 +27,15 @@ void ModelFiles::count(int64_t bytes, const std::string& what) {
                 fmt::format("model files are over {} bytes together (at {})", max_bytes_, what));
 }
 
-fs::path ModelFiles::resolve(const std::string& relative) const {
+FileStamp FileStamp::of(const fs::path& path) {
+  std::error_code size_error, time_error;
+  const auto size = fs::file_size(path, size_error);
+  const auto modified = fs::last_write_time(path, time_error);
+  if (size_error || time_error) return {path};
+  return {path, size, modified};
+}
+
+FileStamp ModelFiles::resolve(const std::string& relative) {
   if (folder_.empty())
     throw Error(ErrorKind::InvalidArgument,
                 "a model read from memory cannot refer to the file '" + relative.substr(0, 128) + "'");
@@ -41,22 +50,21 @@ fs::path ModelFiles::resolve(const std::string& relative) const {
   if (ec || end != folder_.end())
     throw Error(ErrorKind::InvalidArgument,
                 "model refers to '" + relative.substr(0, 128) + "', which leads outside its folder");
-  return full;
+  const auto seen =
+      std::find_if(stamps_.begin(), stamps_.end(), [&](const FileStamp& s) { return s.path == full; });
+  return seen != stamps_.end() ? *seen : stamps_.emplace_back(FileStamp::of(full));
 }
 
 std::vector<uint8_t> ModelFiles::read(const std::string& relative, const std::string& what) {
-  const fs::path path = resolve(relative);
+  const fs::path path = resolve(relative).path;
   auto bytes = read_file(path, max_bytes_ - bytes_);
   count(int64_t(bytes.size()), what);
   return bytes;
 }
 
-std::string ModelFiles::cache_key(const std::string& relative) const {
-  const fs::path path = resolve(relative);
-  std::error_code ec;
-  const auto size = fs::file_size(path, ec);
-  const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
-  return fmt::format("{}|{}|{}", path.string(), ec ? 0 : size, ec ? 0 : time);
+std::string ModelFiles::cache_key(const std::string& relative) {
+  const FileStamp stamp = resolve(relative);
+  return fmt::format("{}|{}|{}", stamp.path.string(), stamp.size, stamp.modified.time_since_epoch().count());
 }
 
 std::vector<uint8_t> ModelFiles::read_file(const fs::path& path, int64_t max_bytes) {

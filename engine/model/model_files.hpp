@@ -11,6 +11,17 @@
 
 namespace lp {
 
+// A file as it was when a model was about to read it: a file whose stamp differs now has changed since.
+struct FileStamp {
+  std::filesystem::path path;  // canonical
+  uintmax_t size = 0;
+  std::filesystem::file_time_type modified{};
+  bool operator==(const FileStamp&) const = default;
+
+  // The file as it is now (size 0 and no time when it cannot be read).
+  static FileStamp of(const std::filesystem::path& path);
+};
+
 class ModelFiles {
  public:
   // `folder` empty: a model from memory.
@@ -22,16 +33,20 @@ class ModelFiles {
   // memory), NotFound, TooLarge.
   std::vector<uint8_t> read(const std::string& relative, const std::string& what);
   // A key naming the file's content for the texture cache: its canonical path, size and modification time.
-  std::string cache_key(const std::string& relative) const;
+  std::string cache_key(const std::string& relative);
+  // Every file named through read() or cache_key(), stamped when first named, before it was read.
+  const std::vector<FileStamp>& stamps() const { return stamps_; }
 
   // Reads a whole file (at most `max_bytes`), for the model file itself.
   static std::vector<uint8_t> read_file(const std::filesystem::path& path, int64_t max_bytes);
 
  private:
-  std::filesystem::path resolve(const std::string& relative) const;
+  // The file's path, stamped the first time.
+  FileStamp resolve(const std::string& relative);
 
   std::filesystem::path folder_;  // canonical, or empty
   int64_t max_bytes_, bytes_ = 0;
+  std::vector<FileStamp> stamps_;
 };
 
 // A URI's %XX escapes decoded (glTF URIs are URI-encoded).

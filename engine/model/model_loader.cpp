@@ -36,15 +36,20 @@ Model load_model(const std::filesystem::path& path, const ModelLimits& limits, T
   if (extension != ".gltf" && extension != ".glb" && extension != ".obj")
     throw Error(ErrorKind::Unsupported, "model " + name + " is not a .gltf, .glb or .obj file");
   ModelFiles files(path.parent_path().empty() ? "." : path.parent_path(), limits.max_file_bytes);
+  const std::string model_key = files.cache_key(name);  // stamps the model file before reading it
   const auto bytes = ModelFiles::read_file(path, limits.max_file_bytes);
   files.count(int64_t(bytes.size()), name);
   TextureCache local;
-  ModelTextures textures(files, cache ? *cache : local, limits, files.cache_key(name));
+  ModelTextures textures(files, cache ? *cache : local, limits, model_key);
+  Model model;
   if (extension == ".obj") {
     const std::string text(bytes.begin(), bytes.end());
-    return obj::load(text, read_material_libraries(text, files), name, textures, limits);
+    model = obj::load(text, read_material_libraries(text, files), name, textures, limits);
+  } else {
+    model = gltf::load(bytes, name, files, textures, limits);
   }
-  return gltf::load(bytes, name, files, textures, limits);
+  model.files = files.stamps();
+  return model;
 }
 
 Model load_gltf_memory(std::span<const uint8_t> bytes, const std::string& name, const ModelLimits& limits) {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
+#include <limits>
 
 #include "engine/core/error.hpp"
 
@@ -12,19 +12,32 @@ ModelTextures::ModelTextures(ModelFiles& files, TextureCache& cache, const Model
                              std::string model_key)
     : files_(files), cache_(cache), limits_(limits), model_key_(std::move(model_key)) {}
 
-ImageLimits ModelTextures::image_limits() const {
+// Both limits are checked once the decoder knows the size and before it allocates, in messages naming
+// the texture (the decoder's own pixel limit is lifted for that).
+ImageLimits ModelTextures::image_limits(const std::string& what) const {
   ImageLimits l;
-  l.max_pixels = std::min(limits_.max_texture_pixels, limits_.max_total_texture_pixels - pixels_);
+  l.max_pixels = std::numeric_limits<int64_t>::max();
+  l.before_allocation = [this, what](int64_t width, int64_t height) {
+    if (width * height > limits_.max_texture_pixels)
+      throw Error(ErrorKind::TooLarge,
+                  fmt::format("{} is {} x {} pixels, over the limit of {} pixels per texture", what, width,
+                              height, limits_.max_texture_pixels));
+    check_total(pixels_ + width * height, what);
+  };
   return l;
+}
+
+void ModelTextures::check_total(int64_t pixels, const std::string& what) const {
+  if (pixels > limits_.max_total_texture_pixels)
+    throw Error(ErrorKind::TooLarge, fmt::format("the model's textures are over {} pixels together (at {})",
+                                                 limits_.max_total_texture_pixels, what));
 }
 
 std::shared_ptr<const Texture> ModelTextures::counted(std::shared_ptr<const Texture> texture,
                                                       const std::string& what) {
   if (seen_.insert(texture.get()).second) {
     pixels_ += int64_t(texture->width()) * texture->height();
-    if (pixels_ > limits_.max_total_texture_pixels)
-      throw Error(ErrorKind::TooLarge, fmt::format("the model's textures are over {} pixels together (at {})",
-                                                   limits_.max_total_texture_pixels, what));
+    check_total(pixels_, what);
   }
   return texture;
 }
@@ -32,15 +45,16 @@ std::shared_ptr<const Texture> ModelTextures::counted(std::shared_ptr<const Text
 std::shared_ptr<const Texture> ModelTextures::embedded(int image, std::span<const uint8_t> bytes,
                                                        ColorSpace space, const std::string& what) {
   return counted(cache_.get(fmt::format("{}#image{}", model_key_, image), space,
-                            [&] { return decode_texture(bytes, space, image_limits(), what); }),
+                            [&] { return decode_texture(bytes, space, image_limits(what), what); }),
                  what);
 }
 
 std::shared_ptr<const Texture> ModelTextures::file(const std::string& relative, ColorSpace space,
                                                    const std::string& what) {
   return counted(
-      cache_.get(files_.cache_key(relative), space,
-                 [&] { return decode_texture(files_.read(relative, what), space, image_limits(), what); }),
+      cache_.get(
+          files_.cache_key(relative), space,
+          [&] { return decode_texture(files_.read(relative, what), space, image_limits(what), what); }),
       what);
 }
 

@@ -26,7 +26,8 @@ class ModelTextures {
 
  private:
   std::shared_ptr<const Texture> counted(std::shared_ptr<const Texture> texture, const std::string& what);
-  ImageLimits image_limits() const;
+  ImageLimits image_limits(const std::string& what) const;
+  void check_total(int64_t pixels, const std::string& what) const;
 
   ModelFiles& files_;
   TextureCache& cache_;

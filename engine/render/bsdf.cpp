@@ -34,6 +34,13 @@ struct Factory {
 
 }  // namespace
 
+std::optional<BsdfSample> weighted_sample(const Bsdf& bsdf, Vec3 wo, Vec3 wi) {
+  if (wi.z <= 0) return std::nullopt;
+  const float p = bsdf.pdf(wo, wi);
+  if (!(p > 0)) return std::nullopt;
+  return BsdfSample{wi, bsdf.eval(wo, wi) / p, p};
+}
+
 std::unique_ptr<Bsdf> make_bsdf(const Material& material) {
   return std::visit(Factory{}, material);
 }

@@ -38,6 +38,10 @@ class Bsdf {
   virtual bool two_sided() const { return true; }
 };
 
+// The non-delta sample of `bsdf` in direction wi, weighted eval / pdf; nullopt when wi is below the
+// surface or its pdf is 0.
+std::optional<BsdfSample> weighted_sample(const Bsdf& bsdf, Vec3 wo, Vec3 wi);
+
 // Throws lp::Error(InvalidArgument) for out-of-range parameters.
 std::unique_ptr<Bsdf> make_bsdf(const Material& material);
 

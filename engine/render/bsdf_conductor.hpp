@@ -1,8 +1,10 @@
 #pragma once
 // A metal: complex index eta + i k per RGB channel (engine/fresnel), smooth (a delta lobe) when the
-// roughness is 0, otherwise GGX microfacet reflection with visible-normal sampling.
+// roughness is 0, otherwise GGX microfacet reflection with visible-normal sampling and the energy its
+// single scattering loses given back (microfacet_multiscatter.hpp), with F_avg the cosine-weighted mean
+// of the metal's Fresnel reflectance.
 #include "engine/render/bsdf.hpp"
-#include "engine/render/microfacet.hpp"
+#include "engine/render/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 
@@ -19,7 +21,8 @@ class ConductorBsdf final : public Bsdf {
 
   Rgb eta_, k_;
   bool delta_specular_;  // roughness below kDeltaLobeAlpha: the specular lobe is a mirror (delta)
-  Ggx ggx_;
+  CompensatedGgx lobe_;
+  Rgb ms_fresnel_;  // F_ms
 };
 
 }  // namespace lp::render

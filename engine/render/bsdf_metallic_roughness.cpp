@@ -11,9 +11,10 @@ float model_alpha(float roughness) {
   return std::max(r * r, kMinModelAlpha);
 }
 
-float coat_diffuse_fresnel() {
-  static const float fdr = PlasticBsdf::diffuse_fresnel(kModelDielectricIor);
-  return fdr;
+// The dielectric part's coat, shared by every model surface (computed at first use).
+const DielectricCoat& model_coat() {
+  static const DielectricCoat coat(kModelDielectricIor);
+  return coat;
 }
 
 Rgb schlick(Rgb f0, float cos_i) {
@@ -22,22 +23,23 @@ Rgb schlick(Rgb f0, float cos_i) {
   return f0 + (Rgb{1, 1, 1} - f0) * m5;
 }
 
+// 2 * integral of schlick(f0, mu) mu dmu = f0 + (1 - f0) * 2 B(2, 6) = f0 + (1 - f0) / 21.
+Rgb schlick_average(Rgb f0) {
+  return f0 + (Rgb{1, 1, 1} - f0) * (1.0f / 21.0f);
+}
+
 }  // namespace
 
 MetallicRoughnessBsdf::MetallicRoughnessBsdf(Rgb base_color, float metallic, float roughness)
     : base_(base_color),
       metallic_(std::clamp(metallic, 0.0f, 1.0f)),
-      ggx_(model_alpha(roughness)),
-      dielectric_(base_color, kModelDielectricIor, model_alpha(roughness), coat_diffuse_fresnel()) {}
+      metal_(model_alpha(roughness)),
+      metal_ms_fresnel_(metal_.multiscatter_fresnel(schlick_average(base_color))),
+      dielectric_(base_color, model_alpha(roughness), model_coat()) {}
 
 Rgb MetallicRoughnessBsdf::eval_metal(Vec3 wo, Vec3 wi) const {
-  const Vec3 h = normalize(wo + wi);
-  return schlick(base_, dot(wo, h)) * ggx_.reflection(wo, wi, h);
-}
-
-float MetallicRoughnessBsdf::pdf_metal(Vec3 wo, Vec3 wi) const {
-  const Vec3 h = normalize(wo + wi);
-  return ggx_.reflection_pdf(wo, h);
+  return metal_.eval(
+      wo, wi, [this](float cos_d) { return schlick(base_, cos_d); }, metal_ms_fresnel_);
 }
 
 Rgb MetallicRoughnessBsdf::eval(Vec3 wo, Vec3 wi) const {
@@ -52,26 +54,21 @@ float MetallicRoughnessBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z <= 0) return 0;
   float p = 0;
   if (metallic_ < 1) p += dielectric_.pdf(wo, wi) * (1.0f - metallic_);
-  if (metallic_ > 0) p += pdf_metal(wo, wi) * metallic_;
+  if (metallic_ > 0) p += metal_.pdf(wo, wi) * metallic_;
   return p;
 }
 
 std::optional<BsdfSample> MetallicRoughnessBsdf::sample(Vec3 wo, float u_lobe, Point2 u) const {
   if (wo.z <= 0) return std::nullopt;
-  Vec3 wi;
+  std::optional<Vec3> wi;
   if (u_lobe < metallic_) {
-    const Vec3 h = ggx_.sample_visible_normal(wo, u.x, u.y);
-    if (dot(wo, h) <= 0) return std::nullopt;
-    wi = reflect(wo, h);
+    wi = metal_.sample(wo, u_lobe / metallic_, u);
   } else {
     const std::optional<BsdfSample> s = dielectric_.sample(wo, (u_lobe - metallic_) / (1.0f - metallic_), u);
-    if (!s) return std::nullopt;
-    wi = s->wi;
+    if (s) wi = s->wi;
   }
-  if (wi.z <= 0) return std::nullopt;
-  const float p = pdf(wo, wi);
-  if (!(p > 0)) return std::nullopt;
-  return BsdfSample{wi, eval(wo, wi) / p, p};
+  if (!wi) return std::nullopt;
+  return weighted_sample(*this, wo, *wi);
 }
 
 }  // namespace lp::render

@@ -2,13 +2,15 @@
 // glTF's metallic-roughness material as a mix of two of our models, weighted by `metallic`:
 //   dielectric part (1 - metallic): the plastic model (bsdf_plastic.hpp), a GGX coat of index 1.5
 //     (F0 = 0.04, glTF's dielectric) over a diffuse base of the base colour;
-//   metallic part: GGX reflection with Schlick's Fresnel of F0 = base colour.
+//   metallic part: GGX reflection with Schlick's Fresnel of F0 = base colour, and the energy its single
+//     scattering loses given back (microfacet_multiscatter.hpp; F_avg of Schlick's F is
+//     F0 + (1 - F0) / 21 in closed form).
 // Both use GGX alpha = roughness^2, held at kMinModelAlpha or above: a glTF roughness of 0 renders as a
 // very sharp but not a delta lobe, so every model surface takes light samples and the mix stays one
-// smooth lobe set. A lobe is picked with probability (1 - metallic) / metallic.
+// smooth lobe set. A part is picked with probability (1 - metallic) / metallic.
 #include "engine/render/bsdf.hpp"
 #include "engine/render/bsdf_plastic.hpp"
-#include "engine/render/microfacet.hpp"
+#include "engine/render/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 
@@ -26,11 +28,11 @@ class MetallicRoughnessBsdf final : public Bsdf {
 
  private:
   Rgb eval_metal(Vec3 wo, Vec3 wi) const;
-  float pdf_metal(Vec3 wo, Vec3 wi) const;
 
   Rgb base_;
   float metallic_;
-  Ggx ggx_;
+  CompensatedGgx metal_;
+  Rgb metal_ms_fresnel_;  // F_ms of the metallic part
   PlasticBsdf dielectric_;
 };
 

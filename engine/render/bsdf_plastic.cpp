@@ -1,6 +1,6 @@
 #include "engine/render/bsdf_plastic.hpp"
 
-#include <algorithm>
+#include <utility>
 
 #include "engine/core/constants.hpp"
 #include "engine/fresnel/dielectric.hpp"
@@ -9,56 +9,75 @@
 namespace lp::render {
 namespace {
 
-double diffuse_fresnel_reflectance(double ior) {
-  constexpr int kSteps = 4096;  // midpoint rule; F is smooth in mu, the error is ~1e-7
-  double sum = 0;
-  for (int i = 0; i < kSteps; ++i) {
-    const double mu = (i + 0.5) / kSteps;
-    sum += fresnel_dielectric(mu, 1.0, ior) * mu;
-  }
-  return 2.0 * sum / kSteps;
+GgxAlbedo::Fresnel dielectric_fresnel(float ior) {
+  return [ior](double cos_i) { return fresnel_dielectric(cos_i, 1.0, ior); };
+}
+
+float mean_fresnel(float ior) {
+  return float(cosine_weighted_mean(dielectric_fresnel(ior)));
+}
+
+// The coat's alpha: 0 (a mirror) below kDeltaLobeAlpha.
+float coat_alpha(float roughness) {
+  return roughness < kDeltaLobeAlpha ? 0.0f : roughness;
 }
 
 }  // namespace
 
-float PlasticBsdf::diffuse_fresnel(float ior) {
-  return float(diffuse_fresnel_reflectance(ior));
-}
+DielectricCoat::DielectricCoat(float index)
+    : ior(index), fresnel_average(mean_fresnel(index)), single_scattering(dielectric_fresnel(index)) {}
+
+DielectricCoat::DielectricCoat(float index, float alpha)
+    : ior(index), fresnel_average(mean_fresnel(index)), single_scattering(dielectric_fresnel(index), alpha) {}
 
 PlasticBsdf::PlasticBsdf(Rgb albedo, float ior, float roughness)
-    : PlasticBsdf(albedo, ior, roughness, diffuse_fresnel(ior)) {}
+    : PlasticBsdf(albedo, roughness, std::make_shared<const DielectricCoat>(ior, coat_alpha(roughness)),
+                  nullptr) {}
 
-PlasticBsdf::PlasticBsdf(Rgb albedo, float ior, float roughness, float fdr)
+PlasticBsdf::PlasticBsdf(Rgb albedo, float roughness, const DielectricCoat& coat)
+    : PlasticBsdf(albedo, roughness, nullptr, &coat) {}
+
+PlasticBsdf::PlasticBsdf(Rgb albedo, float roughness, std::shared_ptr<const DielectricCoat> owned,
+                         const DielectricCoat* coat)
     : albedo_(albedo),
-      ior_(ior),
       delta_specular_(roughness < kDeltaLobeAlpha),
-      ggx_(roughness),
-      fdr_(fdr),
+      owned_coat_(std::move(owned)),
+      coat_(coat ? coat : owned_coat_.get()),
+      lobe_(roughness),
+      single_scattering_(coat_->single_scattering.row(roughness)),
+      ms_fresnel_(lobe_.multiscatter_fresnel(coat_->fresnel_average)),
+      coat_average_(delta_specular_
+                        ? coat_->fresnel_average
+                        : single_scattering_.average() + ms_fresnel_ * lobe_.multiscatter_average()),
       mean_albedo_((albedo.x + albedo.y + albedo.z) / 3.0f) {}
 
 float PlasticBsdf::fresnel(float cos_i) const {
-  return float(fresnel_dielectric(cos_i, 1.0, ior_));
+  return float(fresnel_dielectric(cos_i, 1.0, coat_->ior));
 }
 
-// Choose the coat in proportion to its reflectance against the base's (1 - F) * albedo.
-float PlasticBsdf::specular_probability(float fresnel_o) const {
-  const float diffuse = (1.0f - fresnel_o) * mean_albedo_;
-  return fresnel_o + diffuse > 0 ? fresnel_o / (fresnel_o + diffuse) : 1.0f;
+float PlasticBsdf::coat_albedo(float cos_o) const {
+  if (delta_specular_) return fresnel(cos_o);
+  return single_scattering_(cos_o) + ms_fresnel_ * lobe_.multiscatter_albedo(cos_o);
+}
+
+// The coat's single-scattering lobe (what visible-normal sampling covers) against the rest.
+float PlasticBsdf::specular_probability(float cos_o) const {
+  const float coat = coat_albedo(cos_o);
+  const float specular = delta_specular_ ? coat : single_scattering_(cos_o);
+  const float total = coat + (1.0f - coat) * mean_albedo_;
+  return total > 0 ? specular / total : 1.0f;
 }
 
 Rgb PlasticBsdf::eval_specular(Vec3 wo, Vec3 wi) const {
-  const Vec3 h = normalize(wo + wi);
-  const float f = fresnel(dot(wo, h)) * ggx_.reflection(wo, wi, h);
-  return {f, f, f};
-}
-
-float PlasticBsdf::pdf_specular(Vec3 wo, Vec3 wi) const {
-  const Vec3 h = normalize(wo + wi);
-  return ggx_.reflection_pdf(wo, h);
+  const auto fresnel_rgb = [this](float cos_d) {
+    const float f = fresnel(cos_d);
+    return Rgb{f, f, f};
+  };
+  return lobe_.eval(wo, wi, fresnel_rgb, Rgb{ms_fresnel_, ms_fresnel_, ms_fresnel_});
 }
 
 Rgb PlasticBsdf::eval_diffuse(Vec3 wo, Vec3 wi) const {
-  const float t = (1.0f - fresnel(wo.z)) * (1.0f - fresnel(wi.z)) / (kPiF * (1.0f - fdr_));
+  const float t = (1.0f - coat_albedo(wo.z)) * (1.0f - coat_albedo(wi.z)) / (kPiF * (1.0f - coat_average_));
   return albedo_ * (t * wi.z);
 }
 
@@ -71,29 +90,23 @@ Rgb PlasticBsdf::eval(Vec3 wo, Vec3 wi) const {
 
 float PlasticBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z <= 0) return 0;
-  const float ps = specular_probability(fresnel(wo.z));
+  const float ps = specular_probability(wo.z);
   float p = (1.0f - ps) * cosine_hemisphere_pdf(wi.z);
-  if (!delta_specular_) p += ps * pdf_specular(wo, wi);
+  if (!delta_specular_) p += ps * lobe_.ggx().reflection_pdf(wo, normalize(wo + wi));
   return p;
 }
 
 std::optional<BsdfSample> PlasticBsdf::sample(Vec3 wo, float u_lobe, Point2 u) const {
   if (wo.z <= 0) return std::nullopt;
-  const float fo = fresnel(wo.z);
-  const float ps = specular_probability(fo);
-  Vec3 wi;
-  if (u_lobe < ps) {
-    if (delta_specular_) return BsdfSample{{-wo.x, -wo.y, wo.z}, Rgb{fo, fo, fo} / ps, ps, 1.0f, true};
-    const Vec3 h = ggx_.sample_visible_normal(wo, u.x, u.y);
-    if (dot(wo, h) <= 0) return std::nullopt;
-    wi = reflect(wo, h);
-  } else {
-    wi = square_to_cosine_hemisphere(u.x, u.y);
+  const float ps = specular_probability(wo.z);
+  if (u_lobe >= ps) return weighted_sample(*this, wo, square_to_cosine_hemisphere(u.x, u.y));
+  if (delta_specular_) {
+    const float f = fresnel(wo.z);
+    return BsdfSample{{-wo.x, -wo.y, wo.z}, Rgb{f, f, f} / ps, ps, 1.0f, true};
   }
-  if (wi.z <= 0) return std::nullopt;
-  const float p = pdf(wo, wi);
-  if (!(p > 0)) return std::nullopt;
-  return BsdfSample{wi, eval(wo, wi) / p, p};
+  const std::optional<Vec3> wi = lobe_.ggx().sample_reflection(wo, u.x, u.y);
+  if (!wi) return std::nullopt;
+  return weighted_sample(*this, wo, *wi);
 }
 
 }  // namespace lp::render

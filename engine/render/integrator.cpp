@@ -40,7 +40,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) {
       if (depth == 0) escape = env_.locate(ray.direction);
-      result += beta * escaped(escape, depth, delta_chain, last_delta, bsdf_pdf);
+      result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf);
       break;
     }
     cone.advance(hit->t);
@@ -99,21 +99,24 @@ Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayC
   return {hit, frame, bsdf, frame.to_local(wo), ng, emission};
 }
 
-Rgb Integrator::escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta,
+Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
                         float bsdf_pdf) const {
-  if (depth == 0) return config_.env_visible ? env_.radiance(pixel) : Rgb{};
+  // A camera ray or a ray leaving a delta lobe takes no part in MIS: it sees the map over its
+  // footprint. Every other ray reads the importance grid, as the light samples it is weighed against do.
+  const Rgb seen = last_delta
+                       ? (config_.mipmaps ? env_.radiance_over(pixel, spread) : env_.radiance_sharp(pixel))
+                       : env_.radiance(pixel);
+  if (depth == 0) return config_.env_visible ? seen : Rgb{};
   switch (config_.mode) {
     case LightingMode::Bsdf:
-      return env_.radiance(pixel);
+      return seen;
     case LightingMode::EnvMap:
-      return last_delta ? env_.radiance(pixel)
-                        : env_.radiance(pixel) * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
+      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
     case LightingMode::Uniform:
-      return last_delta ? env_.radiance(pixel)
-                        : env_.radiance(pixel) * power_heuristic(bsdf_pdf, kUniformSpherePdf);
+      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, kUniformSpherePdf);
     case LightingMode::MedianCut:
     case LightingMode::MedianCutAll:
-      return delta_chain ? env_.radiance(pixel) : Rgb{};
+      return delta_chain ? seen : Rgb{};
   }
   return {};
 }

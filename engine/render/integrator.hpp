@@ -57,7 +57,8 @@ class Integrator {
   static bool same_side(const Shading& s, Vec3 direction) {
     return !s.bsdf.two_sided() || dot(direction, s.geometric) > 0;
   }
-  Rgb escaped(const EnvPixel& pixel, int depth, bool delta_chain, bool last_delta, float bsdf_pdf) const;
+  Rgb escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
+              float bsdf_pdf) const;
   Rgb direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const;
   Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;
   Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const;

@@ -48,4 +48,12 @@ float Ggx::visible_normal_pdf(Vec3 wo, Vec3 m) const {
   return g1(wo) * std::max(0.0f, dot(wo, m)) * d(m) / wo.z;
 }
 
+std::optional<Vec3> Ggx::sample_reflection(Vec3 wo, float u1, float u2) const {
+  const Vec3 h = sample_visible_normal(wo, u1, u2);
+  if (dot(wo, h) <= 0) return std::nullopt;
+  const Vec3 wi = reflect(wo, h);
+  if (wi.z <= 0) return std::nullopt;
+  return wi;
+}
+
 }  // namespace lp::render

@@ -2,6 +2,8 @@
 // The isotropic GGX (Trowbridge-Reitz) microfacet distribution in the local frame (z = macro normal),
 // with the height-correlated Smith masking-shadowing term and sampling of the distribution of visible
 // normals (Heitz 2018, "Sampling the GGX Distribution of Visible Normals").
+#include <optional>
+
 #include "engine/core/vec3.hpp"
 
 namespace lp::render {
@@ -31,6 +33,9 @@ class Ggx {
   // D(h) G(wo, wi) / (4 wo.z); and the density of wi when h is sampled as a visible normal of wo.
   float reflection(Vec3 wo, Vec3 wi, Vec3 h) const { return d(h) * g(wo, wi) / (4.0f * wo.z); }
   float reflection_pdf(Vec3 wo, Vec3 h) const { return visible_normal_pdf(wo, h) / (4.0f * dot(wo, h)); }
+  // wo reflected off a visible normal sampled for it (density reflection_pdf); nullopt when it points
+  // below the surface.
+  std::optional<Vec3> sample_reflection(Vec3 wo, float u1, float u2) const;
 
  private:
   float alpha_;

@@ -102,6 +102,9 @@ struct Lighting {
   float rotation_deg = 0;  // about z
   float intensity = 1;
   bool visible = true;  // the camera sees the map
+  // The widest importance grid (env_light.hpp): a wider map is sampled on its first coarser level
+  // that fits. Not a request field: the engine's trade between sampling memory and fidelity.
+  int importance_max_width = limits::kDefaultImportanceMaxWidth;
   void validate(const std::string& prefix) const;
 };
 
@@ -117,7 +120,7 @@ struct RenderSettings {
   int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
   MeshLimits mesh_limits;
-  bool mipmaps = true;      // texture levels chosen by ray cones (else level 0 everywhere)
+  bool mipmaps = true;      // texture and map levels chosen by ray cones (else level 0 everywhere)
   bool normal_maps = true;  // tangent-space normal maps perturb the shading normal
   void validate(const std::string& prefix) const;
 };

@@ -78,6 +78,8 @@ void Lighting::validate(const std::string& prefix) const {
   require(lights >= 1, field_path(prefix, "lights"), fmt::format("must be at least 1, got {}", lights));
   require_in(field_path(prefix, "rotation_deg"), rotation_deg, kRotationDeg);
   require_in(field_path(prefix, "intensity"), intensity, kIntensity);
+  require(importance_max_width >= 1, field_path(prefix, "importance_max_width"),
+          fmt::format("must be at least 1, got {}", importance_max_width));
 }
 
 void RenderSettings::validate(const std::string& prefix) const {

@@ -8,19 +8,22 @@ namespace lp {
 
 struct TextureTransform {
   Point2 offset{0, 0};
-  float rotation = 0;  // radians, counter-clockwise about the UV origin (u right, v up)
+  float rotation = 0;  // radians: the UVs turn counter-clockwise as drawn with v down (the image clockwise)
   Point2 scale{1, 1};
 
   bool identity() const {
     return offset.x == 0 && offset.y == 0 && rotation == 0 && scale.x == 1 && scale.y == 1;
   }
 
-  // uv' = T * R * S * uv as the extension writes it in GLSL, whose mat3(cos, sin, 0, -sin, cos, 0, ...)
-  // lists columns: u' = cos u - sin v, v' = sin u + cos v after scaling, then the offset.
+  // uv' = T * R * S * uv with the rows of R (cos, sin) and (-sin, cos): u' = cos u + sin v,
+  // v' = -sin u + cos v after scaling, then the offset. This is the rotation the extension's text, its
+  // example (offset (0, 1), rotation pi/2 and scale 0.5 read the lower-left quadrant) and the
+  // TextureTransformTest sample's markers define; the GLSL listing's mat3, read column-major, is its
+  // transpose (an erratum of the listing, KhronosGroup/glTF issue 1563).
   Point2 apply(Point2 uv) const {
     const float c = std::cos(rotation), s = std::sin(rotation);
     const float u = uv.x * scale.x, v = uv.y * scale.y;
-    return {c * u - s * v + offset.x, s * u + c * v + offset.y};
+    return {c * u + s * v + offset.x, -s * u + c * v + offset.y};
   }
 };
 

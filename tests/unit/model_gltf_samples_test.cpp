@@ -1,86 +1,36 @@
-// Every glTF sample of Debian's assimp-testmodels: the valid ones load with their triangle counts, the
-// broken ones (and the ones using what we do not read) are refused with an lp::Error; none crashes.
+// Every glTF sample of Debian's assimp-testmodels (support/gltf_samples.hpp): the valid ones load with
+// their triangle counts, the broken ones (and glTF 1.0, and what we do not read) are refused with an
+// lp::Error; none crashes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "engine/core/error.hpp"
 #include "engine/model/model_loader.hpp"
+#include "support/gltf_samples.hpp"
+#include "support/test_data.hpp"
 
 namespace lp {
 namespace {
 
-const std::filesystem::path kSamples = "/usr/share/assimp/models/glTF2";
-
-// Valid files and the triangles their default scene holds. Every other sample must be refused.
-const std::map<std::string, size_t> kValid = {
-    {"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 121496},
-    {"BoxBadNormals-glTF-Binary/BoxBadNormals.glb", 12},
-    {"BoxTextured-glTF-Binary/BoxTextured.glb", 12},
-    {"BoxTextured-glTF-Embedded/BoxTextured.gltf", 12},
-    {"BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf", 12},
-    {"BoxTextured-glTF/BoxTextured.gltf", 12},
-    {"ClearCoat-glTF/ClearCoatTest.gltf", 37116},
-    {"cameras/Cameras.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf", 2},  // triangle strip
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf", 2},  // triangle fan
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_06.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_11.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_12.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_13.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_14.gltf", 2},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_15.gltf", 2},
-    {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 12},
-    {"issue_3269/texcoord_crash.gltf", 10},
-    {"simple_skin/simple_skin.gltf", 8},
-    {"textureTransform/TextureTransformTest.gltf", 24},
-};
-
-// Refused files and the kind of error: malformed ones Corrupt, a missing buffer NotFound, extensions
-// and texture coordinate sets we do not read Unsupported.
-const std::map<std::string, ErrorKind> kRefused = {
-    {"BoxTexcoords-glTF/boxTexcoords.gltf", ErrorKind::Unsupported},               // TEXCOORD_1
-    {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", ErrorKind::Unsupported},  // required extension
-    {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", ErrorKind::Corrupt},
-    {"IncorrectVertexArrays/Cube.gltf", ErrorKind::Corrupt},
-    {"IndexOutOfRange/AllIndicesOutOfRange.gltf", ErrorKind::Corrupt},
-    {"IndexOutOfRange/IndexOutOfRange.gltf", ErrorKind::Corrupt},
-    {"MissingBin/BoxTextured.gltf", ErrorKind::NotFound},
-    {"RecursiveNodes/RecursiveNodes.gltf", ErrorKind::Corrupt},
-    {"SchemaFailures/sceneWrongType.gltf", ErrorKind::Corrupt},
-    {"TestNoRootNode/NoScene.gltf", ErrorKind::Corrupt},
-    {"TestNoRootNode/SceneWithoutNodes.gltf", ErrorKind::Corrupt},
-    {"draco/2CylinderEngine.gltf",
-     ErrorKind::Corrupt},  // Draco-compressed: its accessors have no buffer view
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_00.gltf",
-     ErrorKind::Corrupt},  // points only
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_01.gltf", ErrorKind::Corrupt},  // lines only
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_02.gltf", ErrorKind::Corrupt},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_03.gltf", ErrorKind::Corrupt},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_07.gltf", ErrorKind::Corrupt},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_08.gltf", ErrorKind::Corrupt},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_09.gltf", ErrorKind::Corrupt},
-    {"glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_10.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badArray.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badExtension.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badNumber.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badObject.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badString.gltf", ErrorKind::Corrupt},
-    {"wrongTypes/badUint.gltf", ErrorKind::Corrupt},
-};
+const std::filesystem::path kSamples = test::assimp_model_path("glTF2");
 
 TEST(GltfSamples, EverySampleLoadsWithItsTriangleCountOrIsRefused) {
-  size_t seen = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(kSamples)) {
-    const auto ext = entry.path().extension();
-    if (ext != ".gltf" && ext != ".glb") continue;
-    ++seen;
-    const std::string name = entry.path().lexically_relative(kSamples).string();
+  const auto& valid = test::valid_gltf_samples();
+  const auto& refused = test::refused_gltf_samples();
+  const std::vector<std::string> files = test::gltf_sample_files();
+  for (const std::string& name : files) {
     SCOPED_TRACE(name);
-    if (const auto valid = kValid.find(name); valid != kValid.end()) {
-      const Model m = load_model(entry.path(), {});
-      EXPECT_EQ(m.triangle_count(), valid->second);
+    const std::filesystem::path path = test::assimp_model_path(name);
+    if (const auto v = valid.find(name); v != valid.end()) {
+      const Model m = load_model(path, {});
+      EXPECT_EQ(m.triangle_count(), v->second);
       EXPECT_EQ(m.triangle_materials.size(), m.triangle_count());
       EXPECT_EQ(m.normals.size(), m.vertex_count());
       EXPECT_EQ(m.uvs.size(), m.vertex_count());
@@ -90,17 +40,21 @@ TEST(GltfSamples, EverySampleLoadsWithItsTriangleCountOrIsRefused) {
       for (const Vec3& n : m.normals) ASSERT_NEAR(length(n), 1.0f, 1e-4f);
       continue;
     }
-    const auto refused = kRefused.find(name);
-    ASSERT_NE(refused, kRefused.end()) << "a sample this test does not know";
+    const auto r = refused.find(name);
+    ASSERT_NE(r, refused.end()) << "a sample this test does not know";
     try {
-      load_model(entry.path(), {});
+      load_model(path, {});
       ADD_FAILURE() << "loaded";
     } catch (const Error& e) {
-      EXPECT_EQ(e.kind(), refused->second) << e.what();
+      EXPECT_EQ(e.kind(), r->second) << e.what();
       EXPECT_LT(std::string(e.what()).size(), 700u);
+      // glTF 1.0 is refused as such, not for the first property whose type 2.0 changed.
+      if (name.starts_with("glTF/")) {
+        EXPECT_NE(std::string(e.what()).find("glTF 1.0"), std::string::npos) << e.what();
+      }
     }
   }
-  EXPECT_EQ(seen, kValid.size() + kRefused.size());
+  EXPECT_EQ(files.size(), valid.size() + refused.size());
 }
 
 TEST(GltfSamples, BoxTexturedHasTwelveTrianglesWithItsTextureCoordinatesAndSampler) {
@@ -120,6 +74,27 @@ TEST(GltfSamples, BoxTexturedHasTwelveTrianglesWithItsTextureCoordinatesAndSampl
     EXPECT_FLOAT_EQ(m.uvs[1].x, 5.0f);
     EXPECT_NEAR(m.uvs[2].y, 1.0f, 1e-6f);
     EXPECT_EQ(m.indices[3], 3u);
+    // Each face is four vertices (a parallelogram: corner 3 = 1 + 2 - 0) whose UVs are an affine map
+    // onto a unit square [k, k + 1] x [0, 1], a different k = 0..5 per face: the box unrolled along u.
+    std::set<int> squares;
+    for (size_t f = 0; f < 6; ++f) {
+      const size_t v = f * 4;
+      const Vec3 p = m.positions[v + 1] + m.positions[v + 2] - m.positions[v];
+      EXPECT_NEAR(length(p - m.positions[v + 3]), 0.0f, 1e-6f) << "face " << f;
+      const Point2 uv0 = m.uvs[v], uv1 = m.uvs[v + 1], uv2 = m.uvs[v + 2], uv3 = m.uvs[v + 3];
+      EXPECT_NEAR(uv1.x + uv2.x - uv0.x, uv3.x, 1e-6f) << "face " << f;
+      EXPECT_NEAR(uv1.y + uv2.y - uv0.y, uv3.y, 1e-6f) << "face " << f;
+      const float u_min = std::min({uv0.x, uv1.x, uv2.x, uv3.x}),
+                  u_max = std::max({uv0.x, uv1.x, uv2.x, uv3.x});
+      const float v_min = std::min({uv0.y, uv1.y, uv2.y, uv3.y}),
+                  v_max = std::max({uv0.y, uv1.y, uv2.y, uv3.y});
+      EXPECT_FLOAT_EQ(u_min, std::round(u_min)) << "face " << f;
+      EXPECT_FLOAT_EQ(u_max - u_min, 1.0f) << "face " << f;
+      EXPECT_FLOAT_EQ(v_min, 0.0f) << "face " << f;
+      EXPECT_NEAR(v_max, 1.0f, 1e-6f) << "face " << f;
+      squares.insert(int(u_min));
+    }
+    EXPECT_EQ(squares, (std::set<int>{0, 1, 2, 3, 4, 5}));
     // The root node's matrix turns (x, y, z) into (x, z, -y): (-0.5, -0.5, 0.5) -> (-0.5, 0.5, 0.5).
     EXPECT_NEAR(m.positions[0].x, -0.5f, 1e-6f);
     EXPECT_NEAR(m.positions[0].y, 0.5f, 1e-6f);

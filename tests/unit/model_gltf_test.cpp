@@ -167,10 +167,12 @@ TEST(GltfModel, LimitsAreCheckedBeforeAllocating) {
   expect_error(error_after([](json&) {}, triangles), ErrorKind::TooLarge, "over 1 triangles");
   ModelLimits pixels;
   pixels.max_texture_pixels = 3;  // the 2 x 2 texture has 4
-  expect_error(error_after([](json&) {}, pixels), ErrorKind::TooLarge, "over the limit of 3 pixels");
+  expect_error(error_after([](json&) {}, pixels), ErrorKind::TooLarge,
+               "image 0 is 2 x 2 pixels, over the limit of 3 pixels per texture");
   ModelLimits total;
   total.max_total_texture_pixels = 4;  // the normal map's 1 pixel goes over
-  expect_error(error_after([](json&) {}, total), ErrorKind::TooLarge, "pixels");
+  expect_error(error_after([](json&) {}, total), ErrorKind::TooLarge,
+               "the model's textures are over 4 pixels together (at image 1)");
   ModelLimits bytes;
   bytes.max_file_bytes = 1000;
   try {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/core/constants.hpp"
 #include "engine/model/model.hpp"
 #include "engine/render/scene_desc.hpp"
 
@@ -42,6 +43,32 @@ inline Model square_model(float half, float tile, const ModelMaterial& material)
   }
   m.indices = {0, 1, 2, 0, 2, 3};
   m.triangle_materials = {0, 0};
+  m.materials = {material};
+  return m;
+}
+
+// The unit sphere about the origin as `rings` x 2 rings triangles with smooth normals, texture
+// coordinates (longitude, latitude) in [0, 1] and tangents along the parallels.
+inline Model sphere_model(int rings, const ModelMaterial& material) {
+  Model m;
+  const int segments = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const float theta = float(i) / float(rings) * kPiF, phi = float(j) / float(segments) * 2 * kPiF;
+      const Vec3 p{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+      m.positions.push_back(p);
+      m.normals.push_back(p);
+      m.uvs.push_back({float(j) / float(segments), float(i) / float(rings)});
+      m.tangents.push_back({{-std::sin(phi), std::cos(phi), 0}, 1});
+    }
+  const auto vertex = [&](int i, int j) { return uint32_t(i * (segments + 1) + j); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
+      if (i > 0) m.indices.insert(m.indices.end(), {a, b, d});
+      if (i < rings - 1) m.indices.insert(m.indices.end(), {b, c, d});
+    }
+  m.triangle_materials.assign(m.indices.size() / 3, 0);
   m.materials = {material};
   return m;
 }

@@ -157,7 +157,7 @@ TEST(RenderScene, ErrorsHaveKinds) {
 TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
   const auto map = constant_map(1.0f);
   const Lighting l = lighting(LightingMode::EnvMap);
-  const auto bunny = lp::test::shared_data() / "meshes" / "bunny.obj";
+  const auto bunny = lp::test::mesh_path("bunny.obj");
   SceneDesc scene = *scene_preset("sphere");
   // The bunny is y-up, about 10 units tall: scale it down and stand it up on z.
   scene.objects[0].shape = MeshObject{bunny, {0, 0, -0.5f}, 0.15f, {90, 0, 0}, nullptr, false};
@@ -175,7 +175,7 @@ TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
   EXPECT_EQ(error_kind([&] { Renderer(scene, l, limited, map); }), ErrorKind::TooLarge);
 
   SceneDesc missing = scene;
-  missing.objects[0].shape = MeshObject{lp::test::shared_data() / "meshes" / "no_such.obj", {}, 1, {}, nullptr, false};
+  missing.objects[0].shape = MeshObject{lp::test::mesh_path("no_such.obj"), {}, 1, {}, nullptr, false};
   EXPECT_EQ(error_kind([&] { Renderer(missing, l, settings(8), map); }), ErrorKind::NotFound);
 
   const auto dir = std::filesystem::temp_directory_path() / "lp_render_scene_test";

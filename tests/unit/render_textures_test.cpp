@@ -1,12 +1,14 @@
 // Textured models in the renderer: base-colour textures at a level chosen by ray cones, mipmaps
 // against aliasing, tangent-space normal maps (a flat map changes nothing, a tilted one shades like a
-// tilted plane, none gains energy), BoxTextured's texture on screen.
+// tilted plane, none gains energy, mirrored UVs shade like unmirrored ones). The Khronos samples on
+// screen: render_gltf_samples_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
 #include "engine/core/constants.hpp"
+#include "engine/model/mesh_part.hpp"
 #include "engine/model/model_loader.hpp"
 #include "model_test_scenes.hpp"
 #include "render_test_helpers.hpp"
@@ -130,10 +132,87 @@ TEST(RenderTextures, TiltedNormalMapShadesLikeATiltedPlane) {
   EXPECT_GT(std::abs(m - f), 0.05 * f);  // the tilt is visible
 }
 
+// The square [-1, 1]^2 at z = 0 as two triangles sharing the diagonal from (-1, -1) to (1, 1), completed
+// as the loaders complete a mesh (tangents generated). Lower-right triangle: u = (x + 1) / 2,
+// v = (1 - y) / 2. Upper-left: the same, or (mirrored) its UVs reflected across the diagonal
+// (u = (y + 1) / 2, v = (1 - x) / 2), so that the diagonal's two vertices are shared by triangles of
+// opposite UV handedness.
+Model diagonal_square(bool mirrored, const ModelMaterial& material) {
+  const auto uv = [](float x, float y) { return Point2{(x + 1) / 2, (1 - y) / 2}; };
+  MeshPart part;
+  part.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  part.normals.assign(4, Vec3{0, 0, 1});
+  part.uvs = {uv(-1, -1), uv(1, -1), uv(1, 1), mirrored ? uv(1, -1) : uv(-1, 1)};
+  part.indices = {0, 1, 2, 0, 2, 3};
+  part.triangle_materials = {0, 0};
+  complete_part(part);
+  Model m;
+  append_part(m, part, Mat4{});
+  m.materials = {material};
+  return m;
+}
+
+// Mean of the red channel over the pixels (x, y) of a square image with s_min <= x + y + 1 - width <=
+// s_max. Seen from above with +y up the image, s = 0 is the world diagonal x = y, s >= 2 lies wholly on
+// its lower-right side, s <= -2 on the upper-left one, and |s| <= 1 straddles it.
+double diagonal_band_mean(const Image& image, int s_min, int s_max) {
+  double sum = 0;
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const int s = x + y + 1 - image.width();
+      if (s < s_min || s > s_max) continue;
+      sum += image.at(x, y).x;
+      ++n;
+    }
+  return sum / n;
+}
+
+TEST(RenderTextures, MirroredUvsShadeAConstantTiltWithoutASeam) {
+  // A tangent-space normal tilted 20 degrees towards (t + b) / sqrt(2): on the lower-right triangle
+  // (t = +x, b = +y) it leans towards world (1, 1, 0), and on the mirrored upper-left one (t = +y,
+  // b = +x, w = -1) towards the same (1, 1, 0). Averaged tangents at the shared diagonal would give no
+  // frame there (+x and +y summed, bitangents opposite) and turn the normal elsewhere near the seam.
+  const float a = 20 * kPiF / 180, lean = std::sin(a) / std::sqrt(2.0f);
+  const Rgb texel{0.5f * (lean + 1), 0.5f * (lean + 1), 0.5f * (std::cos(a) + 1)};
+  ModelMaterial material = test::rough_dielectric({0.8f, 0.8f, 0.8f});
+  material.normal = test::bind(test::make_texture(2, 2, [&](int, int) { return texel; }));
+  ModelMaterial unmapped = material;
+  unmapped.normal.reset();
+  // A sky brighter towards +x, and less so towards +y, so that any turn of the normal shows.
+  const auto sky = test::make_map(128, [](Vec3 d) {
+    const float v = d.z > 0 ? 1.0f + d.x + 0.5f * d.y : 0.0f;
+    return Rgb{v, v, v};
+  });
+  const auto render = [&](Model m) {
+    SceneDesc scene;
+    scene.camera = look({0, 0, 3}, {0, 0, 0}, 10);
+    scene.objects.push_back(test::model_object(std::move(m)));
+    return test::render(scene, lighting(LightingMode::EnvMap), settings(32), sky, 128);
+  };
+  const Image mirrored = render(diagonal_square(true, material));
+  const Image upright = render(diagonal_square(false, material));
+  const Image flat = render(diagonal_square(false, unmapped));
+  // Lower-right half, the band along the diagonal, upper-left half.
+  const std::pair<int, int> regions[] = {{2, 32}, {-1, 1}, {-32, -2}};
+  for (const auto& [lo, hi] : regions) {
+    const double m = diagonal_band_mean(mirrored, lo, hi), u = diagonal_band_mean(upright, lo, hi),
+                 f = diagonal_band_mean(flat, lo, hi);
+    std::printf("diagonal band [%d, %d]: mirrored UVs %.4f, unmirrored %.4f, no normal map %.4f\n", lo, hi, m,
+                u, f);
+    EXPECT_NEAR(m, u, 0.005 * u) << lo << ".." << hi;
+    EXPECT_GT(std::abs(u - f), 0.05 * f) << lo << ".." << hi;  // the tilt is visible
+  }
+  // Both halves shade as one tilted plane (they differ only in the view direction, by under 2 degrees).
+  EXPECT_NEAR(diagonal_band_mean(mirrored, 2, 32), diagonal_band_mean(mirrored, -32, -2),
+              0.01 * diagonal_band_mean(mirrored, 2, 32));
+}
+
 TEST(RenderTextures, NormalMappedWhiteSquareInAFurnaceStaysNearOne) {
-  // Bumps of up to ~15 degrees. The guard discards light below the geometric surface: a cosine lobe
-  // tilted by t loses (1 - cos t) / 2 of itself there (<= 1.7% at 15 deg); the rough coat's
-  // single-scattering GGX loses about 1% more. Neither can add energy: the render stays <= 1.
+  // Bumps of 14 degrees rms, 21 at most. The guard discards light below the geometric surface: a
+  // cosine lobe tilted by t loses (1 - cos t) / 2 of itself there, 1.6% averaged over this map; the
+  // white coated base itself reflects everything (bsdf_plastic.hpp). Measured: 0.993. Nothing can add
+  // energy: the render stays <= 1.
   const auto bumps = test::make_texture(32, 32, [](int x, int y) {
     const float nx = 0.25f * std::sin(float(x) * 0.6f), ny = 0.25f * std::cos(float(y) * 0.45f);
     const float nz = std::sqrt(1 - nx * nx - ny * ny);
@@ -152,7 +231,7 @@ TEST(RenderTextures, NormalMappedWhiteSquareInAFurnaceStaysNearOne) {
   for (int y = 0; y < 24; ++y)
     for (int x = 0; x < 24; ++x) max_pixel = std::max(max_pixel, double(image.at(x, y).x));
   std::printf("normal-mapped white furnace: mean %.4f, max pixel %.4f\n", mean, max_pixel);
-  EXPECT_NEAR(mean, 1.0, 0.04);
+  EXPECT_NEAR(mean, 1.0, 0.016);
   EXPECT_LT(mean, 1.0 + 2e-3);
 }
 

@@ -67,11 +67,27 @@ TEST(TextureTransform, ScaleThenRotateThenOffset) {
   t.offset = {0.5f, 0.25f};
   t.scale = {2.0f, 3.0f};
   t.rotation = float(M_PI) / 2;
-  // (1, 1) scaled to (2, 3), rotated a quarter turn counter-clockwise to (-3, 2), offset to (-2.5, 2.25).
+  // (1, 1) scaled to (2, 3), rotated a quarter turn (u' = v, v' = -u) to (3, -2), offset to (3.5, -1.75).
   const Point2 uv = t.apply({1.0f, 1.0f});
-  EXPECT_NEAR(uv.x, -2.5f, 1e-6f);
-  EXPECT_NEAR(uv.y, 2.25f, 1e-6f);
+  EXPECT_NEAR(uv.x, 3.5f, 1e-6f);
+  EXPECT_NEAR(uv.y, -1.75f, 1e-6f);
   EXPECT_TRUE(TextureTransform{}.identity());
+}
+
+TEST(TextureTransform, TheExtensionsExampleReadsTheLowerLeftQuadrant) {
+  // KHR_texture_transform's example: offset (0, 1), rotation pi/2, scale 0.5 "utilizes only the lower
+  // left quadrant of the source image" (u in [0, 0.5], v in [0.5, 1], v down the image).
+  TextureTransform t;
+  t.offset = {0.0f, 1.0f};
+  t.rotation = float(M_PI) / 2;
+  t.scale = {0.5f, 0.5f};
+  const std::pair<Point2, Point2> corners[] = {
+      {{0, 0}, {0, 1}}, {{1, 0}, {0, 0.5f}}, {{0, 1}, {0.5f, 1}}, {{1, 1}, {0.5f, 0.5f}}};
+  for (const auto& [in, out] : corners) {
+    const Point2 uv = t.apply(in);
+    EXPECT_NEAR(uv.x, out.x, 1e-6f) << in.x << ", " << in.y;
+    EXPECT_NEAR(uv.y, out.y, 1e-6f) << in.x << ", " << in.y;
+  }
 }
 
 std::vector<uint8_t> png_bytes(int w, int h, int channels, const std::vector<uint8_t>& pixels) {

@@ -1,0 +1,40 @@
+#pragma once
+// Coarser copies of a lat-long map, for lookups that stand for a cone of directions rather than one
+// (a camera pixel, a ray leaving a curved mirror). Level k + 1 halves level k (rounded down, at least
+// 1) with an area box filter weighted by each row's solid angle, so every level keeps the map's power
+// (integral of radiance over the sphere) exactly: a coarse texel is the solid-angle mean of what it
+// covers, and the poles' thin rows count for what they are.
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/vec3.hpp"
+#include "engine/envmap/envmap.hpp"
+#include "engine/envmap/latlong.hpp"
+#include "engine/image/image.hpp"
+
+namespace lp {
+
+class EnvMapLevels {
+ public:
+  // Levels 1..`coarsest` of `map` (level 0 is the map's own image, referred to, not copied).
+  EnvMapLevels(const EnvMap& map, int coarsest);
+  // The bytes the levels above 0 take for a width x height map.
+  static int64_t memory_bytes(int width, int height, int coarsest);
+  // The finest level no wider than `max_width`.
+  static int level_for_width(int width, int max_width);
+
+  int coarsest() const { return int(levels_.size()); }
+  const Image& level(int k) const { return k == 0 ? base_ : levels_[size_t(k) - 1]; }
+  // Bilinear in level k (u wraps around, v is clamped at the poles).
+  Rgb bilinear(int k, latlong::Uv uv) const;
+  // Between the two levels around `level` (clamped to [0, coarsest]), bilinear in each.
+  Rgb trilinear(latlong::Uv uv, float level) const;
+  // The level whose texels span `angle` radians in theta (a cone's full angle), unclamped.
+  float level_for_angle(float angle) const;
+
+ private:
+  const Image& base_;
+  std::vector<Image> levels_;
+};
+
+}  // namespace lp

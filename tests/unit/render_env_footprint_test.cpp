@@ -1,0 +1,121 @@
+// Environment-map lookups over a footprint: camera rays and rays leaving a mirror see the mean of the
+// map over their ray cone (not one aliased texel), while everything MIS weighs reads the importance
+// grid, so a render converges to the same image whichever strategy lights it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "engine/core/constants.hpp"
+#include "render_test_helpers.hpp"
+
+namespace lp::render {
+namespace {
+
+using test::lighting;
+using test::settings;
+
+// One-texel stripes across phi on a 512 x 256 map: radiance 2 on even columns, 0 on odd ones.
+std::shared_ptr<const EnvMap> stripes() {
+  Image image(512, 256);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) image.set(x, y, x % 2 ? Rgb{} : Rgb{2, 2, 2});
+  return std::make_shared<const EnvMap>(std::move(image));
+}
+
+// Grid level 3 for the 512-wide map: footprints may reach texels of 8 x 8.
+Lighting coarse_grid(LightingMode mode) {
+  Lighting l = lighting(mode);
+  l.importance_max_width = 64;
+  return l;
+}
+
+struct Stats {
+  double mean = 0, variance = 0;
+};
+
+template <class Keep>
+Stats stats(const Image& image, Keep keep) {
+  double sum = 0, sq = 0;
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (keep(x, y)) {
+        const double v = image.at(x, y).x;
+        sum += v, sq += v * v, ++n;
+      }
+  const double mean = sum / n;
+  return {mean, sq / n - mean * mean};
+}
+
+Image render_mipmapped(const SceneDesc& scene, const Lighting& l, bool mipmaps, int size, int spp) {
+  RenderSettings s = settings(size);
+  s.mipmaps = mipmaps;
+  return test::render(scene, l, s, stripes(), spp);
+}
+
+TEST(RenderEnvFootprint, AWideCameraPixelSeesTheMeanOfTheStripes) {
+  // A 90 degree view over 32 pixels: a pixel spans 2.8 degrees, four of the map's 0.7 degree texels.
+  SceneDesc scene = *scene_preset("furnace");
+  scene.objects[0].shape = SphereObject{{0, 0, -50}, 0.1f};  // out of view
+  scene.camera.position = {0, 0, 0};
+  scene.camera.look_at = {1, 0, 0};
+  scene.camera.up = {0, 0, 1};
+  scene.camera.fov_deg = 90;
+  const auto all = [](int, int) { return true; };
+  const Stats on = stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), true, 32, 1), all);
+  const Stats off = stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), false, 32, 1), all);
+  std::printf("background at 1 spp: footprint mean %.4f variance %.5f, texel mean %.4f variance %.4f\n",
+              on.mean, on.variance, off.mean, off.variance);
+  EXPECT_NEAR(on.mean, 1.0, 0.02);
+  EXPECT_LT(on.variance, 0.01);
+  EXPECT_GT(off.variance, 0.5);  // each pixel sees 0 or 2
+}
+
+TEST(RenderEnvFootprint, ACurvedMirrorReflectsTheMeanOfWhatItsConeCovers) {
+  SceneDesc scene = *scene_preset("furnace");
+  scene.objects[0].material = MirrorMaterial{{1, 1, 1}};
+  const auto on_sphere = [](int x, int y) { return test::on_preset_sphere(x, y, 32); };
+  const Stats on = stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), true, 32, 1), on_sphere);
+  const Stats off =
+      stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), false, 32, 1), on_sphere);
+  std::printf("mirror at 1 spp: footprint mean %.4f variance %.5f, texel mean %.4f variance %.4f\n", on.mean,
+              on.variance, off.mean, off.variance);
+  EXPECT_NEAR(on.mean, 1.0, 0.05);
+  EXPECT_LT(on.variance, 0.05 * off.variance);
+}
+
+// A sun and a sky, with detail finer than the coarse grid.
+std::shared_ptr<const EnvMap> sky() {
+  return test::make_map(256, [](Vec3 d) {
+    const float sun = dot(d, normalize(Vec3{0.3f, 0.4f, 0.8f})) > 0.995f ? 400.0f : 0.0f;
+    const float bands = 0.2f + 0.2f * float(int(std::floor(std::atan2(d.y, d.x) * 40)) % 2 != 0);
+    const float sky = d.z > 0 ? 0.5f + 0.5f * d.z : bands;
+    return Rgb{sky + sun, sky + 0.8f * sun, sky + 0.6f * sun};
+  });
+}
+
+TEST(RenderEnvFootprint, MisAndBsdfSamplingAgreeOnACoarseGrid) {
+  const SceneDesc scene = *scene_preset("sphere");
+  Lighting mis = lighting(LightingMode::EnvMap), bsdf = lighting(LightingMode::Bsdf);
+  mis.importance_max_width = bsdf.importance_max_width = 32;  // grid level 3 of the 256-wide map
+  const Image a = test::render(scene, mis, settings(24), sky(), 256);
+  const Image b = test::render(scene, bsdf, settings(24), sky(), 4096);
+  const double ma = test::sphere_mean(a), mb = test::sphere_mean(b);
+  std::printf("coarse grid: MIS %.4f, BSDF sampling %.4f\n", ma, mb);
+  EXPECT_NEAR(ma, mb, 0.02 * mb);
+}
+
+TEST(RenderEnvFootprint, ACoarseGridLightsADiffuseSphereAsTheFullMapDoes) {
+  const SceneDesc scene = *scene_preset("sphere");
+  Lighting coarse = lighting(LightingMode::EnvMap), full = lighting(LightingMode::EnvMap);
+  coarse.importance_max_width = 32;
+  const Image a = test::render(scene, coarse, settings(24), sky(), 512);
+  const Image b = test::render(scene, full, settings(24), sky(), 512);
+  const double ma = test::sphere_mean(a), mb = test::sphere_mean(b);
+  std::printf("diffuse sphere: grid 32 wide %.4f, full grid %.4f\n", ma, mb);
+  EXPECT_NEAR(ma, mb, 0.02 * mb);
+}
+
+}  // namespace
+}  // namespace lp::render
