@@ -10,11 +10,11 @@
 #include <cmath>
 #include <map>
 
+#include "bench_data.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
-#include "engine/image/image_io.hpp"
 #include "engine/envmap/sample_set.hpp"
-#include "support/test_data.hpp"
+#include "engine/image/image_io.hpp"
 
 namespace lp {
 namespace {
@@ -23,7 +23,7 @@ const EnvMap& forest(int width) {
   static std::map<int, std::unique_ptr<EnvMap>> maps;
   auto& slot = maps[width];
   if (!slot) {
-    Image image = read_image_file(test::envmap_path("forest.exr")).image;
+    Image image = read_image_file(bench::envmap_path("forest.exr")).image;
     if (width != image.width()) image = resize_box(image, width, width / 2);
     slot = std::make_unique<EnvMap>(std::move(image));
   }
@@ -55,13 +55,15 @@ class BaselineSampler {
   }
 
   EnvSample sample(float u1, float u2) const {
-    const int y = std::clamp(int(std::upper_bound(marginal_.begin(), marginal_.end(), u2) - marginal_.begin()) - 1, 0, h_ - 1);
+    const int y = std::clamp(
+        int(std::upper_bound(marginal_.begin(), marginal_.end(), u2) - marginal_.begin()) - 1, 0, h_ - 1);
     const auto& cdf = rows_[size_t(y)];
     const int x = std::clamp(int(std::upper_bound(cdf.begin(), cdf.end(), u1) - cdf.begin()) - 1, 0, w_ - 1);
     EnvSample s;
     s.pixel_x = x, s.pixel_y = y;
     s.u = (float(x) + (u1 - cdf[size_t(x)]) / (cdf[size_t(x) + 1] - cdf[size_t(x)])) / float(w_);
-    s.v = (float(y) + (u2 - marginal_[size_t(y)]) / (marginal_[size_t(y) + 1] - marginal_[size_t(y)])) / float(h_);
+    s.v = (float(y) + (u2 - marginal_[size_t(y)]) / (marginal_[size_t(y) + 1] - marginal_[size_t(y)])) /
+          float(h_);
     s.theta = s.v * kPiF, s.phi = s.u * 2 * kPiF;
     s.direction = latlong::direction_from_angles(s.theta, s.phi);
     const float density = func_[size_t(y)][size_t(x)] * float(w_) * float(h_) / total_;

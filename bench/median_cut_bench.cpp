@@ -6,15 +6,15 @@
 // time depends on what else runs; on an idle one with N cores it lies between CPU / N and CPU).
 #include <benchmark/benchmark.h>
 
+#include "bench_data.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/mediancut/median_cut.hpp"
-#include "support/test_data.hpp"
 
 namespace lp {
 namespace {
 
 const Image& forest(int width) {
-  static const Image small = read_image_file(test::envmap_path("forest.exr")).image;
+  static const Image small = read_image_file(bench::envmap_path("forest.exr")).image;
   if (width == small.width()) return small;
   static const Image large = resize_box(small, 8192, 4096);
   return large;
@@ -32,17 +32,28 @@ void BM_SatBuild(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(build_weight_table(image, LuminanceMode::Average).total());
   state.SetItemsProcessed(state.iterations() * image.pixel_count());
 }
-BENCHMARK(BM_SatBuild)->Arg(1024)->Arg(8192)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(BM_SatBuild)
+    ->Arg(1024)
+    ->Arg(8192)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 // The tables already built (as when they are cached on the map): subdivision and light placement.
 void BM_MedianCut(benchmark::State& state) {
   const Image& image = forest(int(state.range(0)));
   const SplitTables tables = build_split_tables(image, LuminanceMode::Average, SplitRule::Median);
-  for (auto _ : state) benchmark::DoNotOptimize(median_cut(image, params(int(state.range(1))), tables).lights.data());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(median_cut(image, params(int(state.range(1))), tables).lights.data());
 }
 BENCHMARK(BM_MedianCut)
-    ->Args({1024, 256})->Args({1024, 4096})->Args({8192, 256})->Args({8192, 4096})
-    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+    ->Args({1024, 256})
+    ->Args({1024, 4096})
+    ->Args({8192, 256})
+    ->Args({8192, 4096})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 // Everything from the image: the table build, subdivision and light placement.
 void BM_MedianCutWithSat(benchmark::State& state) {
@@ -53,20 +64,29 @@ void BM_MedianCutWithSat(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MedianCutWithSat)
-    ->Args({1024, 256})->Args({1024, 4096})->Args({8192, 256})->Args({8192, 4096})
-    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+    ->Args({1024, 256})
+    ->Args({1024, 4096})
+    ->Args({8192, 256})
+    ->Args({8192, 4096})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 // The variance split, tables included (five tables instead of one).
 void BM_MedianCutVarianceWithSat(benchmark::State& state) {
   const Image& image = forest(int(state.range(0)));
   for (auto _ : state) {
     const SplitTables tables = build_split_tables(image, LuminanceMode::Average, SplitRule::Variance);
-    benchmark::DoNotOptimize(median_cut(image, params(int(state.range(1)), SplitRule::Variance), tables).lights.data());
+    benchmark::DoNotOptimize(
+        median_cut(image, params(int(state.range(1)), SplitRule::Variance), tables).lights.data());
   }
 }
 BENCHMARK(BM_MedianCutVarianceWithSat)
-    ->Args({1024, 256})->Args({8192, 4096})
-    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+    ->Args({1024, 256})
+    ->Args({8192, 4096})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace lp

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "bench_data.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/mesh_loader.hpp"
 #include "support/test_data.hpp"
@@ -58,8 +59,7 @@ void measure(benchmark::State& state, const std::filesystem::path& obj) {
 }
 
 void BM_BunnyMemory(benchmark::State& state) {
-  const auto bunny = lp::test::shared_data() / "meshes" / "bunny.obj";
-  if (!std::filesystem::exists(bunny)) return state.SkipWithError("no ../shared/data/meshes/bunny.obj");
+  const auto bunny = lp::bench::mesh_path("bunny.obj");
   measure(state, bunny);
 }
 BENCHMARK(BM_BunnyMemory)->Iterations(1)->Unit(benchmark::kMillisecond);

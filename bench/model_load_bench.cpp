@@ -12,7 +12,7 @@
 
 namespace {
 
-const std::filesystem::path kSamples = "/usr/share/assimp/models/glTF2";
+const std::filesystem::path kSamples = lp::test::assimp_model_path("glTF2");
 
 void load(benchmark::State& state, const std::filesystem::path& path) {
   size_t triangles = 0;

@@ -6,6 +6,8 @@
 //                           [threads=2] [out_dir]   (out_dir: writes reference.exr and spp_<n>.exr)
 // Arguments starting with "--" (Google Benchmark flags from bench/run_all.sh) are ignored. The Cycles
 // comparison in the README used: render_error_bench sphere envmap 128 4096 1024 2
+#include <tbb/task_arena.h>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -16,20 +18,18 @@
 #include <string>
 #include <vector>
 
-#include <tbb/task_arena.h>
-
+#include "bench_data.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/render/renderer.hpp"
-#include "support/test_data.hpp"
 
 namespace lp::render {
 namespace {
 
 const std::map<std::string, LightingMode> kModes = {{"envmap", LightingMode::EnvMap},
-                                                     {"uniform", LightingMode::Uniform},
-                                                     {"bsdf", LightingMode::Bsdf},
-                                                     {"median_cut", LightingMode::MedianCut},
-                                                     {"median_cut_all", LightingMode::MedianCutAll}};
+                                                    {"uniform", LightingMode::Uniform},
+                                                    {"bsdf", LightingMode::Bsdf},
+                                                    {"median_cut", LightingMode::MedianCut},
+                                                    {"median_cut_all", LightingMode::MedianCutAll}};
 
 struct Timed {
   Image image;
@@ -37,8 +37,8 @@ struct Timed {
   RenderStats stats;
 };
 
-Timed render(const SceneDesc& scene, const Lighting& lighting, int size, int spp, uint64_t seed, tbb::task_arena& arena,
-             const std::shared_ptr<const EnvMap>& map) {
+Timed render(const SceneDesc& scene, const Lighting& lighting, int size, int spp, uint64_t seed,
+             tbb::task_arena& arena, const std::shared_ptr<const EnvMap>& map) {
   RenderSettings settings;
   settings.width = settings.height = size;
   settings.seed = seed;
@@ -71,7 +71,9 @@ int run(int argc, char** argv) {
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]).rfind("--", 0) != 0) args.emplace_back(argv[i]);
-  const auto arg = [&](size_t i, const char* fallback) { return i < args.size() ? args[i] : std::string(fallback); };
+  const auto arg = [&](size_t i, const char* fallback) {
+    return i < args.size() ? args[i] : std::string(fallback);
+  };
   const std::string preset = arg(0, "sphere");
   const std::string mode = arg(1, "envmap");
   const int size = std::atoi(arg(2, "64").c_str());
@@ -88,12 +90,12 @@ int run(int argc, char** argv) {
   lighting.mode = kModes.at(mode);
   lighting.lights = 64;
   lighting.visible = false;
-  const auto map = std::make_shared<const EnvMap>(read_image_file(test::envmap_path("forest.exr")).image);
+  const auto map = std::make_shared<const EnvMap>(read_image_file(bench::envmap_path("forest.exr")).image);
   tbb::task_arena arena(threads);
 
   const Timed ref = render(*scene, lighting, size, ref_spp, 1000, arena, map);
-  std::printf("# lightprobe %s %s %dx%d, %d threads; reference %d spp in %.2f s\n", preset.c_str(), mode.c_str(), size,
-              size, threads, ref_spp, ref.seconds);
+  std::printf("# lightprobe %s %s %dx%d, %d threads; reference %d spp in %.2f s\n", preset.c_str(),
+              mode.c_str(), size, size, threads, ref_spp, ref.seconds);
   if (!out_dir.empty()) write_file(out_dir / "reference.exr", write_exr(ref.image));
   std::printf("spp,seconds,relative_rmse,samples_per_s,rays_per_s\n");
   for (int spp = 1; spp <= max_spp; spp *= 2) {
@@ -108,4 +110,6 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace lp::render
 
-int main(int argc, char** argv) { return lp::render::run(argc, argv); }
+int main(int argc, char** argv) {
+  return lp::render::run(argc, argv);
+}

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "bench_data.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/render/renderer.hpp"
 #include "support/test_data.hpp"
@@ -19,7 +20,7 @@ namespace {
 
 std::shared_ptr<const EnvMap> forest() {
   static const auto map =
-      std::make_shared<const EnvMap>(read_image_file(lp::test::envmap_path("forest.exr")).image);
+      std::make_shared<const EnvMap>(read_image_file(lp::bench::envmap_path("forest.exr")).image);
   return map;
 }
 

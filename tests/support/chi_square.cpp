@@ -1,9 +1,9 @@
 #include "support/chi_square.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace lp::test {
 namespace {
@@ -67,7 +67,8 @@ ChiSquareResult chi_square_test(std::span<const double> observed, std::span<cons
     r.statistic = INFINITY;  // samples where the pdf says none can fall
   }
   r.degrees_of_freedom = cells - 1;
-  r.p_value = std::isfinite(r.statistic) ? regularized_gamma_q(0.5 * r.degrees_of_freedom, 0.5 * r.statistic) : 0.0;
+  r.p_value =
+      std::isfinite(r.statistic) ? regularized_gamma_q(0.5 * r.degrees_of_freedom, 0.5 * r.statistic) : 0.0;
   return r;
 }
 

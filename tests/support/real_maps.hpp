@@ -1,5 +1,5 @@
 #pragma once
-// Real maps from ../shared/data, loaded once per test binary.
+// The real maps of tests/data/envmaps, loaded once per test binary.
 #include <memory>
 #include <string>
 

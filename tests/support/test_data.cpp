@@ -10,17 +10,23 @@
 
 namespace lp::test {
 
-std::filesystem::path shared_data() {
-  return LIGHTPROBE_SHARED_DATA;
+namespace {
+std::filesystem::path test_data() {
+  return LIGHTPROBE_TEST_DATA;
 }
+}  // namespace
 
 std::filesystem::path envmap_path(const std::string& file) {
-  return shared_data() / "envmaps" / file;
+  return test_data() / "envmaps" / file;
+}
+
+std::filesystem::path mesh_path(const std::string& file) {
+  return test_data() / "meshes" / file;
 }
 
 std::vector<std::string> real_envmap_files() {
   std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(shared_data() / "envmaps"))
+  for (const auto& e : std::filesystem::directory_iterator(test_data() / "envmaps"))
     if (e.is_regular_file()) files.push_back(e.path().filename().string());
   std::sort(files.begin(), files.end());
   return files;
@@ -31,7 +37,11 @@ std::filesystem::path fuzz_corpus_path(const std::string& target, const std::str
 }
 
 std::filesystem::path model_path(const std::string& file) {
-  return std::filesystem::path(LIGHTPROBE_TEST_DATA) / "models" / file;
+  return test_data() / "models" / file;
+}
+
+std::filesystem::path assimp_model_path(const std::string& file) {
+  return std::filesystem::path("/usr/share/assimp/models") / file;
 }
 
 std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
@@ -52,6 +62,27 @@ std::string grid_obj(int n) {
   return out.str();
 }
 
+std::vector<uint8_t> grey_map_pfm(int width, int height) {
+  Image image(width, height);
+  std::fill(image.data().begin(), image.data().end(), 0.5f);
+  return write_pfm(image);
+}
+
+namespace {
+
+std::string png(const std::vector<uint8_t>& rgb, int width, int height) {
+  const auto bytes = encode_png_rgb8(rgb, width, height);
+  return {bytes.begin(), bytes.end()};
+}
+
+void write_file(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out.write(bytes.data(), std::streamsize(bytes.size())))
+    throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
 std::string checker_png(int n) {
   std::vector<uint8_t> rgb;
   for (int y = 0; y < n; ++y)
@@ -59,8 +90,24 @@ std::string checker_png(int n) {
       const uint8_t other = (x + y) % 2 ? 255 : 30;
       rgb.insert(rgb.end(), {255, other, other});
     }
-  const auto png = encode_png_rgb8(rgb, n, n);
-  return {png.begin(), png.end()};
+  return png(rgb, n, n);
+}
+
+std::string solid_png(int width, int height, std::array<uint8_t, 3> rgb) {
+  std::vector<uint8_t> texels;
+  for (int i = 0; i < width * height; ++i) texels.insert(texels.end(), rgb.begin(), rgb.end());
+  return png(texels, width, height);
+}
+
+void write_textured_quad(const std::filesystem::path& folder, const std::string& albedo_png,
+                         const std::string& normal_png) {
+  write_file(folder / "quad.obj",
+             "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+             "vn 0 0 1\nusemtl m\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n");
+  write_file(folder / "quad.mtl", "newmtl m\nKd 1 1 1\nNs 0\nmap_Kd albedo.png\n" +
+                                      std::string(normal_png.empty() ? "" : "norm normal.png\n"));
+  write_file(folder / "albedo.png", albedo_png);
+  if (!normal_png.empty()) write_file(folder / "normal.png", normal_png);
 }
 
 }  // namespace lp::test

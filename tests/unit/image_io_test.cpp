@@ -51,8 +51,8 @@ void expect_error_kind(ErrorKind kind, const std::function<void()>& f) {
 TEST(ImageIo, RealMapsLoadAtTheirSize) {
   for (const auto& file : test::real_envmap_files()) {
     const DecodedImage d = read_image_file(test::envmap_path(file));
-    EXPECT_EQ(d.image.width(), 1024) << file;
-    EXPECT_EQ(d.image.height(), 512) << file;
+    EXPECT_EQ(d.image.width(), test::kRealMapWidth) << file;
+    EXPECT_EQ(d.image.height(), test::kRealMapHeight) << file;
     EXPECT_EQ(enum_name(d.format), file.substr(file.size() - 3)) << file;
     for (float v : d.image.data()) ASSERT_TRUE(std::isfinite(v)) << file;
   }

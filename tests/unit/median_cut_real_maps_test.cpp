@@ -1,4 +1,4 @@
-// Median cut on the real maps of ../shared/data/envmaps: power conservation, and the property users
+// Median cut on the real maps of tests/data/envmaps: power conservation, and the property users
 // rely on, that the lights light a diffuse surface like the map does.
 #include <gtest/gtest.h>
 
