@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -13,19 +14,25 @@ namespace lp::api {
 
 namespace {
 
-bool finite(const EnvSample& s) {
-  for (float v : {s.u, s.v, s.direction.x, s.direction.y, s.direction.z, s.theta, s.phi, s.pdf, s.radiance.x,
-                  s.radiance.y, s.radiance.z})
-    if (!std::isfinite(v)) return false;
-  return true;
+// A sample's values after its pixel, in the order of kSampleRecordLayout.
+std::array<float, kSampleRecordFloats - 2> values(const EnvSample& s) {
+  return {s.u,   s.v,   s.direction.x, s.direction.y, s.direction.z, s.theta,
+          s.phi, s.pdf, s.radiance.x,  s.radiance.y,  s.radiance.z};
+}
+
+// JSON has no token for NaN or Inf: a sample holding one is a bug upstream, never written.
+void check_finite(const EnvSample& s) {
+  for (float v : values(s))
+    if (!std::isfinite(v))
+      throw std::logic_error(fmt::format("sample at pixel ({}, {}) is not finite", s.pixel_x, s.pixel_y));
 }
 
 }  // namespace
 
-// One sample's JSON object, written into a fixed buffer with std::to_chars: floats in their shortest
-// round-trip form (JSON clients read back the exact values), and no format string parsed per sample,
+// One sample's JSON object or CSV row, written into a fixed buffer with std::to_chars: floats in their
+// shortest round-trip form (JSON clients read back the exact values), and no format string parsed per sample,
 // which made up most of the cost of a small /samples request.
-class SampleJsonWriter {
+class SampleTextWriter {
  public:
   void literal(std::string_view text) {
     std::memcpy(at_, text.data(), text.size());
@@ -46,16 +53,15 @@ class SampleJsonWriter {
 
  private:
   char* end() { return buffer_ + sizeof(buffer_); }
-  // Literals take 70 bytes; 11 floats at most 15 bytes each and 2 ints at most 11 each.
-  char buffer_[320];
+  // JSON literals take 70 bytes, CSV separators 13; 11 floats at most 15 bytes each and 2 ints at most 11
+  // each.
+  char buffer_[384];
   char* at_ = buffer_;
 };
 
-// JSON has no token for NaN or Inf: a sample holding one is a bug upstream, never written.
 void append_sample_json(std::string& out, const EnvSample& s) {
-  if (!finite(s))
-    throw std::logic_error(fmt::format("sample at pixel ({}, {}) is not finite", s.pixel_x, s.pixel_y));
-  SampleJsonWriter w;
+  check_finite(s);
+  SampleTextWriter w;
   w.literal(R"({"pixel":)");
   w.array(s.pixel_x, s.pixel_y);
   w.literal(R"(,"uv":)");
@@ -74,15 +80,28 @@ void append_sample_json(std::string& out, const EnvSample& s) {
   w.append_to(out);
 }
 
+void append_sample_csv(std::string& out, const EnvSample& s) {
+  check_finite(s);
+  SampleTextWriter w;
+  w.number(s.pixel_x);
+  w.literal(",");
+  w.number(s.pixel_y);
+  for (float v : values(s)) {
+    w.literal(",");
+    w.number(v);
+  }
+  w.literal("\n");
+  w.append_to(out);
+}
+
 void append_sample_binary(std::string& out, const EnvSample& s) {
   static_assert(std::endian::native == std::endian::little, "binary records are little-endian");
-  const float record[kSampleRecordFloats] = {
-      float(s.pixel_x), float(s.pixel_y), s.u,         s.v,   s.direction.x,
-      s.direction.y,    s.direction.z,    s.theta,     s.phi, s.pdf,
-      s.radiance.x,     s.radiance.y,     s.radiance.z};
+  const float pixel[2] = {float(s.pixel_x), float(s.pixel_y)};
+  const auto rest = values(s);
   const size_t at = out.size();
-  out.resize(at + sizeof(record));
-  std::memcpy(out.data() + at, record, sizeof(record));
+  out.resize(at + sizeof(pixel) + sizeof(rest));
+  std::memcpy(out.data() + at, pixel, sizeof(pixel));
+  std::memcpy(out.data() + at + sizeof(pixel), rest.data(), sizeof(rest));
 }
 
 }  // namespace lp::api

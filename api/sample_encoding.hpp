@@ -1,5 +1,5 @@
 #pragma once
-// Wire encodings of samples: JSON objects, and packed little-endian float32 records for large N.
+// Wire encodings of samples: JSON objects, packed little-endian float32 records for large N, and CSV rows.
 #include <string>
 
 #include "api/sample_request.hpp"
@@ -11,5 +11,7 @@ namespace lp::api {
 void append_sample_json(std::string& out, const EnvSample& s);
 // kSampleRecordFloats float32 values in the order of kSampleRecordLayout.
 void append_sample_binary(std::string& out, const EnvSample& s);
+// One CSV row (ending in a newline) of the values of a binary record, under the header kSampleRecordLayout.
+void append_sample_csv(std::string& out, const EnvSample& s);
 
 }  // namespace lp::api

@@ -1,4 +1,5 @@
-// The JSON encoding of a sample: valid JSON, every float read back exactly, the largest values fit.
+// The JSON and CSV encodings of a sample: valid JSON, every float read back exactly, the largest values
+// fit; a CSV row holds the binary record's values in its order.
 #include "api/sample_encoding.hpp"
 
 #include <gtest/gtest.h>
@@ -6,7 +7,10 @@
 #include <cfloat>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 namespace lp::api {
 namespace {
@@ -52,7 +56,31 @@ TEST(SampleEncoding, RefusesNonFiniteValues) {
   std::string out;
   EXPECT_THROW(append_sample_json(out, sample_with(NAN, 1)), std::logic_error);
   EXPECT_THROW(append_sample_json(out, sample_with(INFINITY, 1)), std::logic_error);
+  EXPECT_THROW(append_sample_csv(out, sample_with(NAN, 1)), std::logic_error);
   EXPECT_TRUE(out.empty());
+}
+
+TEST(SampleEncoding, CsvRowIsTheBinaryRecordAsText) {
+  EnvSample s = sample_with(0.1f, INT_MAX);
+  s.pdf = FLT_MAX;
+  std::string csv, binary;
+  append_sample_csv(csv, s);
+  append_sample_binary(binary, s);
+  ASSERT_TRUE(csv.ends_with("\n"));
+  ASSERT_EQ(binary.size(), sizeof(float) * kSampleRecordFloats);
+  std::vector<std::string> cells;
+  for (size_t start = 0, comma; start < csv.size(); start = comma + 1) {
+    comma = csv.find_first_of(",\n", start);
+    cells.push_back(csv.substr(start, comma - start));
+  }
+  ASSERT_EQ(cells.size(), size_t(kSampleRecordFloats));
+  EXPECT_EQ(cells[0], "2147483647");
+  EXPECT_EQ(cells[1], "-2147483647");
+  for (int k = 2; k < kSampleRecordFloats; ++k) {
+    float value;
+    std::memcpy(&value, binary.data() + k * sizeof(float), sizeof(float));
+    EXPECT_EQ(std::stof(cells[size_t(k)]), value) << "value " << k << ": " << cells[size_t(k)];
+  }
 }
 
 }  // namespace

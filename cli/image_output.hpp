@@ -1,0 +1,19 @@
+#pragma once
+// The image a command writes, chosen by the API's image parameters (format, exposure, gamma; see
+// api/preview_params.hpp): --format, else the output file's extension (.exr, .pfm, .hdr, .png), else png.
+#include <optional>
+#include <string>
+
+#include "api/preview_params.hpp"
+#include "cli/arguments.hpp"
+
+namespace lp::cli {
+
+// Takes --format, --exposure and --gamma. Throws bad_request when neither --format nor the extension of
+// `file` names a format.
+api::PreviewParams take_image_params(Arguments& args, const std::optional<std::string>& file);
+
+// The help lines of those options.
+std::string image_params_help();
+
+}  // namespace lp::cli

@@ -1,0 +1,57 @@
+#include "cli/scene_file.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "api/api_error.hpp"
+#include "cli/map_argument.hpp"
+#include "engine/core/error.hpp"
+#include "engine/model/model_loader.hpp"
+
+namespace lp::cli {
+namespace {
+
+api::Json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(ErrorKind::NotFound, "cannot open the scene file " + file.string());
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return api::parse_json(text, "the scene file " + file.string());
+}
+
+std::shared_ptr<const EnvMap> load_scene_map(const std::string& envmap, const std::filesystem::path& base) {
+  try {
+    return load_map(envmap, kDefaultInvalidPixelPolicy, base).map;
+  } catch (const Error& e) {
+    throw api::invalid_field("envmap", e.what());
+  }
+}
+
+void load_meshes(render::SceneDesc& scene, const std::filesystem::path& base, const ModelLimits& limits) {
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
+    if (!mesh || mesh->model) continue;  // a preset's model is built in
+    mesh->path = base / mesh->path;
+    try {
+      mesh->model = std::make_shared<const Model>(load_model(mesh->path, limits));
+    } catch (const Error& e) {
+      throw api::invalid_field(fmt::format("scene.objects[{}].path", i), e.what());
+    }
+  }
+}
+
+}  // namespace
+
+SceneRender read_scene_file(const std::filesystem::path& file, const api::Json& overrides,
+                            const api::RequestLimits& limits) {
+  api::Json body = read_json(file);
+  if (body.is_object()) body.update(overrides);
+  const std::filesystem::path folder = file.parent_path();
+  SceneRender r{api::parse_render_request(body, limits), nullptr};
+  r.envmap = load_scene_map(r.request.envmap, overrides.contains("envmap") ? "" : folder);
+  load_meshes(r.request.scene, folder, api::model_limits(limits));
+  return r;
+}
+
+}  // namespace lp::cli

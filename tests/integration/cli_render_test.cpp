@@ -1,0 +1,169 @@
+// `lightprobe render SCENE.json`, the real tool: a white furnace renders its analytic value, a scene with
+// a model next to the scene file renders the image the server renders for the same request, a progress
+// bar goes to standard error, and bad scenes fail with the API's messages.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine/image/image_io.hpp"
+#include "support/cli_run.hpp"
+#include "support/http_reply.hpp"
+#include "support/png_pixels.hpp"
+#include "support/render_polling.hpp"
+#include "support/server_process.hpp"
+#include "support/temp_dir.hpp"
+#include "support/test_data.hpp"
+
+namespace lp {
+namespace {
+
+using nlohmann::json;
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  write_file(path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+}
+
+// A 64 x 32 map of radiance 1 everywhere, as white.pfm in `folder`.
+void write_white_map(const std::filesystem::path& folder) {
+  Image white(64, 32);
+  for (int y = 0; y < white.height(); ++y)
+    for (int x = 0; x < white.width(); ++x) white.set(x, y, {1, 1, 1});
+  write_file(folder / "white.pfm", write_pfm(white));
+}
+
+// A diffuse sphere of albedo 0.5 in a furnace of radiance 1 has radiance 0.5 everywhere: the centre 4 x 4
+// pixels at 32 samples each lie within 0.02 of it; around it the camera sees the map, 1.
+TEST(CliRender, AWhiteFurnaceRendersItsAnalyticValue) {
+  const test::TempDir dir;
+  std::filesystem::create_directories(dir.path() / "maps");
+  write_white_map(dir.path() / "maps");
+  std::filesystem::create_directories(dir.path() / "scenes");
+  write_text(
+      dir.path() / "scenes" / "furnace.json",
+      R"({"envmap":"../maps/white.pfm","scene":{"preset":"furnace"},"width":32,"height":32,"spp":32})");
+  const test::CliRun run = test::run_cli({"render", "scenes/furnace.json", "-o", "furnace.exr"}, dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  EXPECT_TRUE(run.out.empty());
+  const Image image = read_image_file(dir.path() / "furnace.exr").image;
+  ASSERT_EQ(image.width(), 32);
+  ASSERT_EQ(image.height(), 32);
+  double centre = 0;
+  for (int y = 14; y < 18; ++y)
+    for (int x = 14; x < 18; ++x) centre += image.at(x, y).x / 16.0;
+  EXPECT_NEAR(centre, 0.5, 0.02);
+  EXPECT_NEAR(image.at(0, 0).y, 1.0, 1e-6);
+}
+
+TEST(CliRender, ShowsAProgressBarUnlessQuiet) {
+  const test::TempDir dir;
+  write_text(dir.path() / "scene.json", R"({"envmap":"default","width":32,"height":16,"spp":1})");
+  const test::CliRun shown = test::run_cli({"render", "scene.json", "-o", "a.exr"}, dir.path());
+  ASSERT_EQ(shown.exit_status, 0) << shown.err;
+  EXPECT_EQ(shown.err.rfind("\rrender [", 0), 0u) << shown.err;
+  EXPECT_TRUE(shown.err.ends_with("] 100%\n")) << shown.err;
+  const test::CliRun quiet = test::run_cli({"render", "scene.json", "-o", "b.exr", "--quiet"}, dir.path());
+  ASSERT_EQ(quiet.exit_status, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+}
+
+// The same body rendered by the server (the model inside its --data-dir, tests/data) and by the tool (the
+// model beside the scene file): the same samples, so the same image up to float summation order.
+TEST(CliRender, AModelBesideTheSceneFileRendersAsTheServerRendersIt) {
+  const std::string body =
+      R"({"envmap":"forest_exr","scene":{"objects":[{"type":"mesh","path":"models/quad.glb",)"
+      R"("transform":{"rotate_deg":[90,0,0]}}]},"width":24,"height":24,"spp":4,"seed":5})";
+  const auto client = test::shared_server().client();
+  const json accepted = test::reply(client->Post("/api/v1/renders", body, "application/json")).body_json();
+  const std::string id = accepted["id"];
+  ASSERT_EQ(test::finished_render(*client, id)["status"], "done");
+  const test::Reply exr = test::reply(client->Get(("/api/v1/renders/" + id + "/image?format=exr").c_str()));
+  const Image served =
+      read_image(std::span(reinterpret_cast<const uint8_t*>(exr.body.data()), exr.body.size())).image;
+
+  const test::TempDir dir;
+  std::filesystem::create_directories(dir.path() / "models");
+  std::filesystem::copy_file(test::model_path("quad.glb"), dir.path() / "models" / "quad.glb");
+  json scene = json::parse(body);
+  scene["envmap"] = test::envmap_path("forest.exr").string();
+  write_text(dir.path() / "scene.json", scene.dump());
+  const test::CliRun run =
+      test::run_cli({"render", (dir.path() / "scene.json").string(), "--format", "exr", "-q"});
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const Image rendered =
+      read_image(std::span(reinterpret_cast<const uint8_t*>(run.out.data()), run.out.size())).image;
+  ASSERT_EQ(rendered.width(), 24);
+  ASSERT_EQ(rendered.height(), 24);
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 24; ++x)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(rendered.at(x, y)[c], served.at(x, y)[c], 1e-5f * (1 + served.at(x, y)[c]))
+            << x << "," << y << " channel " << c;
+}
+
+// A scene of no objects shows the map everywhere: a white map, radiance 1, darkened one stop and written
+// with gamma 1 is 0.5 * 255 = 127.5, written as 128, in every pixel. A map named on the command line is
+// found from the working directory.
+TEST(CliRender, FieldsOnTheCommandLineReplaceTheFilesAndPngIsToneMapped) {
+  const test::TempDir dir;
+  write_white_map(dir.path());
+  std::filesystem::create_directories(dir.path() / "scenes");
+  write_text(dir.path() / "scenes" / "scene.json",
+             R"({"envmap":"default","scene":{"objects":[]},"width":64,"height":64,"spp":1})");
+  const test::CliRun run =
+      test::run_cli({"render", "scenes/scene.json", "--envmap", "white.pfm", "--width", "4", "--height", "2",
+                     "-o", "white.png", "--exposure", "-1", "--gamma", "1", "-q"},
+                    dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const test::PngPixels png = test::decode_png(test::read_bytes(dir.path() / "white.png"));
+  ASSERT_EQ(png.width, 4);
+  ASSERT_EQ(png.height, 2);
+  for (const uint8_t v : png.rgb) EXPECT_EQ(v, 128);
+}
+
+TEST(CliRender, BadScenesFailAsTheApiAnswersThem) {
+  const test::TempDir dir;
+  const auto client = test::shared_server().client();
+  for (const std::string body : {
+           R"({"envmap":"default","spp":0})",
+           R"({"envmap":"default","width":100000})",
+           R"({"envmap":"default","scene":{"preset":"teapot"}})",
+           R"({"envmap":"default","scene":{"objects":[{"type":"sphere","radius":1}]}})",
+           R"({"envmap":"default","lighting":{"mode":"sun"}})",
+           R"({"envmap":"default","colour":"red"})",
+           R"({"scene":{}})",
+           R"([1,2])",
+       }) {
+    SCOPED_TRACE(body);
+    write_text(dir.path() / "bad.json", body);
+    const test::CliRun run = test::run_cli({"render", "bad.json", "-q"}, dir.path());
+    const test::Reply api = test::reply(client->Post("/api/v1/renders", body, "application/json"));
+    EXPECT_EQ(api.status, 400);
+    EXPECT_EQ(run.exit_status, 2);
+    EXPECT_EQ(run.err, test::cli_error_line(api.body_json()));
+    EXPECT_TRUE(run.out.empty());
+  }
+}
+
+TEST(CliRender, MissingFilesNameTheirField) {
+  const test::TempDir dir;
+  const auto error_of = [&](const std::string& body) {
+    write_text(dir.path() / "scene.json", body);
+    const test::CliRun run = test::run_cli({"render", "scene.json", "-q"}, dir.path());
+    EXPECT_EQ(run.exit_status, 2) << body;
+    return run.err;
+  };
+  EXPECT_EQ(error_of(R"({"envmap":"nowhere.exr"})"),
+            "error: invalid_field: field 'envmap': cannot open nowhere.exr\n");
+  EXPECT_EQ(error_of(R"({"envmap":"default","scene":{"objects":[{"type":"mesh","path":"none.obj"}]}})")
+                .rfind("error: invalid_field: field 'scene.objects[0].path': ", 0),
+            0u);
+  EXPECT_EQ(error_of("{\"envmap\":"), "error: invalid_json: the scene file scene.json is not valid JSON\n");
+  const test::CliRun missing = test::run_cli({"render", "no-scene.json"}, dir.path());
+  EXPECT_EQ(missing.exit_status, 2);
+  EXPECT_EQ(missing.err, "error: not_found: cannot open the scene file no-scene.json\n");
+}
+
+}  // namespace
+}  // namespace lp
