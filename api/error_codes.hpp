@@ -29,6 +29,7 @@ enum class ErrorCode {
   EmptyBody,
   MissingHost,
   HostNotAllowed,
+  Unauthorized,  // --auth-token-file: no or a wrong bearer token
   OriginNotAllowed,
   MethodNotAllowed,
   RequestTimeout,
@@ -49,6 +50,7 @@ enum class ErrorCode {
   TooManyStreams,
   TooManyConnections,
   ShuttingDown,
+  NotReady,  // still loading its maps and state at start
   MemoryBusy,
   InsufficientMemory,
   InsufficientStorage,

@@ -172,6 +172,8 @@ const std::vector<const IntParameter*>& int_parameters() {
                                                        &kMaxRenderDepth,
                                                        &kMaxRenderObjects,
                                                        &kMaxMeshTriangles,
+                                                       &kMaxTexturePixels,
+                                                       &kMaxModelTexturePixels,
                                                        &kMaxRunningJobs,
                                                        &kMaxQueuedJobs,
                                                        &kMaxFinishedJobs,

@@ -57,6 +57,18 @@ inline constexpr IntParameter kMaxMeshTriangles{
     {1, int64_t{1} << 32},  "most triangles in one mesh of a render",
     Owner::Engine,          nullptr,
     ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxTexturePixels{
+    "max-texture-pixels",   limits::kDefaultMaxTexturePixels,
+    {1, int64_t{1} << 34},  "most pixels in one texture of a model a render names",
+    Owner::Engine,          nullptr,
+    ErrorCode::InvalidField};
+inline constexpr IntParameter kMaxModelTexturePixels{"max-model-texture-pixels",
+                                                     limits::kDefaultMaxModelTexturePixels,
+                                                     {1, int64_t{1} << 34},
+                                                     "most pixels in all the textures of one model together",
+                                                     Owner::Engine,
+                                                     nullptr,
+                                                     ErrorCode::InvalidField};
 
 // Resources of the server.
 inline constexpr IntParameter kPort{
@@ -154,6 +166,8 @@ struct RequestLimits {
   int64_t max_render_depth = kMaxRenderDepth.fallback;
   int64_t max_render_objects = kMaxRenderObjects.fallback;
   int64_t max_mesh_triangles = kMaxMeshTriangles.fallback;
+  int64_t max_texture_pixels = kMaxTexturePixels.fallback;
+  int64_t max_model_texture_pixels = kMaxModelTexturePixels.fallback;
 };
 
 // A numeric field of a request body or query, the range it may take before a server limit caps it.

@@ -257,4 +257,12 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   return r;
 }
 
+ModelLimits model_limits(const RequestLimits& limits) {
+  ModelLimits m;
+  m.max_triangles = limits.max_mesh_triangles;
+  m.max_texture_pixels = limits.max_texture_pixels;
+  m.max_total_texture_pixels = limits.max_model_texture_pixels;
+  return m;
+}
+
 }  // namespace lp::api

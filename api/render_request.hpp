@@ -23,4 +23,7 @@ struct RenderRequest {
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits);
 
+// The limits a model a scene names is loaded under (--max-mesh-triangles and the texture pixel limits).
+ModelLimits model_limits(const RequestLimits& limits);
+
 }  // namespace lp::api

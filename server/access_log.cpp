@@ -1,32 +1,57 @@
 #include "server/access_log.hpp"
 
-#include <spdlog/spdlog.h>
+#include <fmt/format.h>
 
-#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "server/logging.hpp"
+#include "server/request_context.hpp"
+#include "server/request_id.hpp"
 
 namespace lp::server {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-thread_local Clock::time_point request_start;
+// The members of the JSON line after its time and level, without the braces.
+std::string json_members(const std::string& message, const httplib::Request& req,
+                         const httplib::Response& res, const std::string& id, double ms) {
+  const RequestContext& r = current_request();
+  const nlohmann::ordered_json line = {
+      {"message", message},
+      {"request_id", id},
+      {"method", req.method},
+      {"path", req.path},
+      {"route", r.route.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.route)},
+      {"status", res.status},
+      {"duration_ms", std::round(ms * 1000) / 1000},
+      {"client", req.remote_addr}};
+  const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return text.substr(1, text.size() - 2);
+}
 
 }  // namespace
 
-void AccessLog::start_request() {
-  request_start = Clock::now();
-}
+AccessLog::AccessLog(int64_t sample_every, LogFormat format)
+    : sample_every_(sample_every), format_(format), logger_(access_logger()) {}
 
 bool AccessLog::sampled() {
   if (sample_every_ <= 0) return false;
   return seen_.fetch_add(1, std::memory_order_relaxed) % uint64_t(sample_every_) == 0;
 }
 
-void AccessLog::record(const httplib::Request& req, const httplib::Response& res) {
+void AccessLog::record(const httplib::Request& req, const httplib::Response& res, double seconds) {
   const bool server_error = res.status >= 500;
   if (!sampled() && !server_error) return;
-  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - request_start).count();
-  spdlog::log(server_error ? spdlog::level::err : spdlog::level::info, "{} {} {} {:.1f} ms", req.method,
-              req.path, res.status, ms);
+  const auto level = server_error ? spdlog::level::err : spdlog::level::info;
+  if (!logger_->should_log(level)) return;
+  const double ms = seconds * 1000;
+  const std::string id = res.get_header_value(kRequestIdHeader);
+  const std::string message = fmt::format("{} {} {} {:.1f} ms", req.method, req.path, res.status, ms);
+  if (format_ == LogFormat::Json)
+    logger_->log(level, "{}", json_members(message, req, res, id, ms));
+  else
+    logger_->log(level, "{} id={}", message, id);
 }
 
 }  // namespace lp::server

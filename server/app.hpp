@@ -7,15 +7,18 @@
 #include "engine/core/memory_budget.hpp"
 #include "server/asset_registry.hpp"
 #include "server/envmap_registry.hpp"
+#include "server/http_metrics.hpp"
 #include "server/job_manager.hpp"
 #include "server/model_cache.hpp"
 #include "server/options.hpp"
+#include "server/render_counters.hpp"
 #include "server/state_store.hpp"
 
 namespace lp::server {
 
 inline JobManagerConfig render_job_config(const Options& o) {
-  return {o.max_running_jobs, o.max_queued_jobs, o.max_finished_jobs, o.max_finished_mb << 20, o.threads};
+  return {o.max_running_jobs,      o.max_queued_jobs, o.max_finished_jobs,
+          o.max_finished_mb << 20, o.threads,         o.render_priority};
 }
 
 // Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
@@ -32,6 +35,9 @@ struct App {
   ModelCache models;                  // the models of scenes' mesh objects, loaded when a request names them
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
+  std::atomic<bool> ready{false};     // the maps to load at start and the state directory are loaded
+  HttpMetrics http_metrics;           // requests answered (GET /metrics)
+  RenderCounters render_counters;     // what renders traced (GET /metrics)
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "api/excerpt.hpp"
+#include "server/vary.hpp"
 
 namespace lp::server {
 namespace {
@@ -33,6 +34,17 @@ bool is_ip_literal(const std::string& name) {
 bool changes_state(const std::string& method) {
   return method != "GET" && method != "HEAD" && method != "OPTIONS";
 }
+
+bool is_preflight(const httplib::Request& req) {
+  return req.method == "OPTIONS" && req.has_header("Access-Control-Request-Method");
+}
+
+// The request headers a page may send beyond the CORS-safelisted ones.
+constexpr const char* kAllowedHeaders = "Content-Type, Accept, Authorization, X-Request-Id, If-None-Match";
+// The response headers a page may read beyond the CORS-safelisted ones.
+constexpr const char* kExposedHeaders =
+    "ETag, X-Request-Id, Retry-After, Location, WWW-Authenticate, X-Spp-Done, X-Sample-Count, "
+    "X-Sample-Record-Layout";
 
 }  // namespace
 
@@ -80,19 +92,30 @@ std::optional<api::ApiError> BrowserPolicy::refusal(const httplib::Request& req)
 
 bool BrowserPolicy::answer_cors(const httplib::Request& req, httplib::Response& res,
                                 const Router& router) const {
-  const std::string origin = req.get_header_value("Origin");
-  if (origin.empty() || !cors_allowed(origin)) return false;
   const bool any = std::find(cors_origins_.begin(), cors_origins_.end(), "*") != cors_origins_.end();
+  if (!cors_origins_.empty() && !any) add_vary(res, "Origin");  // the answer depends on the Origin
+  const std::string origin = req.get_header_value("Origin");
+  if (origin.empty()) return false;
+  if (!cors_allowed(origin)) {
+    if (!is_preflight(req)) return false;
+    send_error(res, api::ErrorCode::OriginNotAllowed,
+               fmt::format("pages from '{}' may not call this server; start it with --cors-origin {} to "
+                           "allow them",
+                           api::excerpt(origin), api::excerpt(origin)));
+    return true;
+  }
   res.set_header("Access-Control-Allow-Origin", any ? "*" : origin);
-  res.set_header("Vary", "Origin");
-  if (req.method != "OPTIONS" || !req.has_header("Access-Control-Request-Method")) return false;
+  if (!is_preflight(req)) {
+    res.set_header("Access-Control-Expose-Headers", kExposedHeaders);
+    return false;
+  }
   const auto methods = router.methods_for(req.path);
   if (methods.empty()) return false;
   std::string allowed;
   for (const auto& m : methods) allowed += (allowed.empty() ? "" : ", ") + m;
   res.set_header("Access-Control-Allow-Methods", allowed);
-  res.set_header("Access-Control-Allow-Headers", "Content-Type, Accept");
-  res.set_header("Access-Control-Max-Age", "600");
+  res.set_header("Access-Control-Allow-Headers", kAllowedHeaders);
+  res.set_header("Access-Control-Max-Age", std::to_string(kPreflightMaxAgeS));
   res.status = 204;
   return true;
 }

@@ -16,14 +16,19 @@
 
 namespace lp::server {
 
+// How long a browser may keep a preflight's answer (Access-Control-Max-Age).
+inline constexpr int kPreflightMaxAgeS = 600;
+
 class BrowserPolicy {
  public:
   explicit BrowserPolicy(const Options& options);
 
   // The refusal for a request (403 host_not_allowed / origin_not_allowed, 400 missing_host), if any.
   std::optional<api::ApiError> refusal(const httplib::Request& req) const;
-  // For an origin listed with --cors-origin: its CORS headers, and true if the request is a preflight
-  // (OPTIONS with Access-Control-Request-Method) now answered with 204.
+  // For an origin listed with --cors-origin: its CORS headers (Allow-Origin, Expose-Headers), and true if
+  // the request is a preflight (OPTIONS with Access-Control-Request-Method) of a route, now answered with
+  // 204 (Allow-Methods: the route's, Allow-Headers, Max-Age). A preflight from another origin is answered
+  // 403 origin_not_allowed (true). With listed origins (not *) every answer has Vary: Origin.
   bool answer_cors(const httplib::Request& req, httplib::Response& res, const Router& router) const;
 
  private:

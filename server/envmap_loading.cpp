@@ -7,8 +7,8 @@
 #include <system_error>
 
 #include "api/api_error.hpp"
+#include "api/builtin_maps.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
-#include "engine/envmap/procedural_sky.hpp"
 #include "server/resource_name.hpp"
 
 namespace lp::server {
@@ -103,11 +103,11 @@ std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::str
 }
 
 void register_default_envmap(App& app) {
-  Image sky = make_procedural_sky();
+  Image sky = *api::builtin_map(api::kDefaultEnvmapName);
   auto pixels =
       app.memory.reserve(EnvMap::image_bytes(sky.width(), sky.height()), MemoryUse::Held, "the default map");
-  register_image(app, "default", {std::move(sky), ImageFormat::Exr}, "procedural", "procedural",
-                 InvalidPixelPolicy::Reject, std::move(pixels));
+  register_image(app, std::string(api::kDefaultEnvmapName), {std::move(sky), ImageFormat::Exr}, "procedural",
+                 "procedural", InvalidPixelPolicy::Reject, std::move(pixels));
 }
 
 }  // namespace lp::server

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "server/raw_response.hpp"
+#include "server/request_context.hpp"
 
 namespace lp::server {
 namespace {
@@ -226,6 +227,7 @@ bool HttpTransport::serve_requests(Connection& c) {
       break;
     }
     c.stream.begin_request(std::move(head.text), head.body);
+    begin_request_context(std::move(head.accept_encoding));
     const bool close = stopping_ || c.served + 1 >= keep_alive_max_count_;
     bool closed = false;
     const bool answered = process_request(c.stream, close, closed, {}) && c.stream.flush();

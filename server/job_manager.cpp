@@ -162,8 +162,8 @@ void JobManager::runner_loop(int runner) {
   // normal-priority arenas, before the renders.
   tbb::task_arena arena(concurrency, 1, tbb::task_arena::priority::low);
   arena.initialize();
-  RenderThreadPriority lowered(arena);
-  lower_to_render_priority();
+  RenderThreadPriority lowered(arena, config_.render_priority);
+  lower_to_render_priority(config_.render_priority);
   while (auto job = next_job()) {
     spdlog::debug("runner {} takes job {}", runner, job->id());
     arena.execute([&] { job->execute(); });

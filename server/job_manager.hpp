@@ -16,6 +16,7 @@
 
 #include "api/parameters.hpp"
 #include "server/job.hpp"
+#include "server/render_thread_priority.hpp"
 
 namespace lp::server {
 
@@ -25,6 +26,7 @@ struct JobManagerConfig {
   int max_finished = int(api::kMaxFinishedJobs.fallback);           // finished jobs kept
   int64_t max_finished_bytes = api::kMaxFinishedMb.fallback << 20;  // and the results they keep
   int arena_concurrency = 0;                                        // threads per job arena; 0 = all cores
+  RenderPriority render_priority = RenderPriority::Low;             // of the threads that render
 };
 
 class JobManager {

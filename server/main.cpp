@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <future>
@@ -11,6 +13,7 @@
 
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
+#include "server/health_check.hpp"
 #include "server/logging.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
@@ -48,15 +51,28 @@ std::jthread stop_on_signal(sigset_t set, lp::server::App& app, lp::server::Serv
   });
 }
 
-// Everything before serving; false (after logging why) if the server cannot start.
+// Everything before serving: the state directory taken and the port bound; false (after logging why) if
+// the server cannot start.
 bool prepare(lp::server::App& app, lp::server::Server& server, int& port) {
-  const auto& options = app.options;
   try {
-    app.state = std::make_unique<lp::server::StateStore>(options.state_dir);
-    port = server.bind();  // before loading anything, so a port in use fails at once
-    for (const auto& [name, path] : options.loads)
+    app.state = std::make_unique<lp::server::StateStore>(app.options.state_dir);
+    port = server.bind();
+  } catch (const std::exception& e) {
+    spdlog::error("cannot start: {}", e.what());
+    return false;
+  }
+  return true;
+}
+
+// While the server answers (the API with 503 not_ready, the probes as they are): the maps to load at
+// start and the state directory; then the server is ready. False (after logging why) if a map of --load
+// cannot be loaded.
+bool load(lp::server::App& app) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    for (const auto& [name, path] : app.options.loads)
       lp::server::register_envmap_file(app, name, path, "file:" + path);
-    if (options.loads.empty()) lp::server::register_default_envmap(app);
+    if (app.options.loads.empty()) lp::server::register_default_envmap(app);
   } catch (const std::exception& e) {
     spdlog::error("cannot start: {}", e.what());
     return false;
@@ -64,6 +80,9 @@ bool prepare(lp::server::App& app, lp::server::Server& server, int& port) {
   lp::server::restore_maps(app);
   lp::server::restore_assets(app);  // before the renders, whose scenes may name assets
   lp::server::restore_renders(app);
+  app.ready.store(true);
+  spdlog::info("ready: maps and state loaded in {:.2f} s",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return true;
 }
 
@@ -87,13 +106,17 @@ int main(int argc, char** argv) {
     lp::server::Options defaults;
     defaults.web_dir = LIGHTPROBE_WEB_DIR;  // the source tree's web/, set by CMake
     options = lp::server::parse_options(argc, argv, std::move(defaults));
-    if (options) lp::server::check_data_dir(*options);
+    if (options && options->health_check_url.empty()) {
+      lp::server::check_data_dir(*options);
+      lp::server::load_auth_token(*options);
+    }
   } catch (const std::exception& e) {
     std::cerr << "lightprobe-server: " << e.what() << "\n";
     return 2;
   }
   if (!options) return 0;
-  lp::server::Logging logging(options->log_level);
+  if (!options->health_check_url.empty()) return lp::server::run_health_check(options->health_check_url);
+  lp::server::Logging logging(options->log_level, options->log_format);
   std::optional<tbb::global_control> threads;
   if (options->threads > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options->threads));
@@ -110,10 +133,22 @@ int main(int argc, char** argv) {
   std::promise<void> run_returned;
   auto signals = stop_on_signal(stop_signals, app, server, run_returned.get_future().share());
   announce_listening(options->host, port);
+  std::atomic<bool> loaded{false}, failed{false};
+  std::thread loading([&] {
+    failed = !load(app);
+    loaded = true;
+    if (failed) pthread_kill(signals.native_handle(), SIGTERM);  // stops the server, exit status 1
+  });
   server.run();
   run_returned.set_value();
   pthread_kill(signals.native_handle(), SIGTERM);  // if run() ended by itself, the sequence still runs
   signals.join();
+  if (!loaded) {  // stopped while loading: a read of a large map need not be waited for
+    spdlog::info("stopped while loading");
+    spdlog::shutdown();
+    std::_Exit(0);
+  }
+  loading.join();
   spdlog::info("stopped");
-  return 0;
+  return failed ? 1 : 0;
 }

@@ -1,39 +1,46 @@
 #include "server/model_cache.hpp"
 
-#include <system_error>
+#include <algorithm>
 
-#include "engine/core/error.hpp"
 #include "engine/model/model_loader.hpp"
 
 namespace lp::server {
+namespace {
+
+bool unchanged(const std::vector<FileStamp>& files) {
+  return std::all_of(files.begin(), files.end(),
+                     [](const FileStamp& file) { return FileStamp::of(file.path) == file; });
+}
+
+}  // namespace
 
 ModelCache::ModelCache(const MemoryBudget& budget) : budget_(budget) {}
 
 void ModelCache::Shelf::evict(const std::filesystem::path& path, const HeldModel* held) {
   std::lock_guard lock(mutex);
   const auto it = entries.find(path);
-  if (it != entries.end() && it->second.held.get() == held) entries.erase(it);
+  if (it != entries.end() && it->second.get() == held) entries.erase(it);
 }
 
 std::shared_ptr<const Model> ModelCache::get(const std::filesystem::path& path, const ModelLimits& limits) {
-  std::error_code ec;
-  Version version{std::filesystem::last_write_time(path, ec), 0};
-  if (!ec) version.size = std::filesystem::file_size(path, ec);
-  if (ec) throw Error(ErrorKind::NotFound, "model not found: " + path.filename().string());
   std::shared_ptr<const HeldModel> held;
   {
     std::lock_guard lock(shelf_->mutex);
     const auto it = shelf_->entries.find(path);
-    if (it != shelf_->entries.end() && it->second.version == version) held = it->second.held;
+    if (it != shelf_->entries.end()) held = it->second;
   }
-  if (held) {
+  if (held && unchanged(held->model.files)) {
     held->memory.touch();
-  } else {
-    // Loaded without the lock, so that a slow load holds up no other; reserving may evict from this
-    // cache, which takes the lock.
-    held = load(path, limits);
+    return std::shared_ptr<const Model>(held, &held->model);
+  }
+  // A stale model leaves the cache even if the files no longer load (renders holding it keep it).
+  if (held) shelf_->evict(path, held.get());
+  // Loaded without the lock, so that a slow load holds up no other; reserving may evict from this
+  // cache, which takes the lock.
+  held = load(path, limits);
+  {
     std::lock_guard lock(shelf_->mutex);
-    shelf_->entries[path] = Entry{version, held};
+    shelf_->entries[path] = held;
   }
   return std::shared_ptr<const Model>(held, &held->model);
 }
@@ -47,6 +54,14 @@ std::shared_ptr<const ModelCache::HeldModel> ModelCache::load(const std::filesys
                                          if (const auto s = shelf.lock()) s->evict(path, raw);
                                        });
   return held;
+}
+
+void ModelCache::hold_builtin(std::shared_ptr<const Model> model, const std::string& what) {
+  std::lock_guard lock(builtin_mutex_);
+  if (builtins_.contains(model.get())) return;
+  MemoryReservation memory = budget_.reserve(model->memory_bytes(), MemoryUse::Held, what);
+  const Model* key = model.get();
+  builtins_.emplace(key, Builtin{std::move(model), std::move(memory)});
 }
 
 size_t ModelCache::size() const {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "server/request_id.hpp"
 #include "server/router.hpp"
 
 namespace lp::server {
@@ -37,9 +38,10 @@ std::string raw_error_response(api::ErrorCode code, const std::string& message,
   send_error(res, code, message);
   const int status = res.status;
   return fmt::format(
-      "HTTP/1.1 {} {}\r\nContent-Type: application/json\r\nContent-Length: {}\r\nConnection: "
+      "HTTP/1.1 {} {}\r\nContent-Type: application/json\r\nContent-Length: {}\r\n{}: {}\r\nConnection: "
       "close\r\n{}\r\n{}",
-      status, reason_phrase(status), res.body.size(), extra_headers, res.body);
+      status, reason_phrase(status), res.body.size(), kRequestIdHeader,
+      res.get_header_value(kRequestIdHeader), extra_headers, res.body);
 }
 
 }  // namespace lp::server

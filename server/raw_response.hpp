@@ -7,7 +7,8 @@
 
 namespace lp::server {
 
-// A complete HTTP/1.1 response with {"error":{"code":..,"message":..}} and Connection: close;
+// A complete HTTP/1.1 response with {"error":{"code":..,"message":..,"request_id":..}} (a new id, also in
+// X-Request-Id) and Connection: close;
 // `extra_headers` are whole header lines, each ending in \r\n.
 std::string raw_error_response(api::ErrorCode code, const std::string& message,
                                const std::string& extra_headers = {});

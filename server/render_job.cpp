@@ -107,6 +107,9 @@ void RenderJob::publish(const render::Renderer& renderer, double render_s) {
   auto image = std::make_shared<const Image>(renderer.image());
   const auto stats = renderer.stats();
   std::lock_guard lock(mutex_);
+  if (counters_)
+    counters_->add(earlier_stats_.samples + stats.samples - stats_.samples,
+                   earlier_stats_.rays + stats.rays - stats_.rays, earlier_render_s_ + render_s - render_s_);
   image_ = std::move(image);
   spp_done_ = renderer.spp_done();
   stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};

@@ -12,6 +12,7 @@
 #include "engine/image/image.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/job.hpp"
+#include "server/render_counters.hpp"
 #include "server/render_record.hpp"
 #include "server/state_store.hpp"
 
@@ -43,6 +44,8 @@ class RenderJob : public Job {
   // The job's reservation in the memory budget (see render_memory.hpp); it shrinks to the kept image
   // when the job ends. Set before the job is submitted.
   void hold_memory(MemoryReservation memory) { memory_ = std::move(memory); }
+  // The server's counters the job adds each finished pass to. Set before the job is submitted.
+  void count_in(RenderCounters* counters) { counters_ = counters; }
 
   void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
   void save_record(JobStatus status, const std::optional<JobError>& error) const;
@@ -67,6 +70,7 @@ class RenderJob : public Job {
   const nlohmann::json request_json_;
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
   StateStore* const store_;
+  RenderCounters* counters_ = nullptr;
   const render::RenderStats earlier_stats_;  // of earlier runs
   const double earlier_render_s_;
 

@@ -9,23 +9,16 @@
 #include "server/mesh_paths.hpp"
 
 namespace lp::server {
-namespace {
-
-ModelLimits model_limits(const App& app) {
-  ModelLimits limits;
-  limits.max_triangles = app.options.limits.max_mesh_triangles;
-  return limits;
-}
-
-}  // namespace
 
 int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
   int64_t triangles = 0;
-  const ModelLimits limits = model_limits(app);
+  const ModelLimits limits = api::model_limits(app.options.limits);
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
     if (!mesh) continue;
-    if (!mesh->model) {
+    if (mesh->model) {
+      app.models.hold_builtin(mesh->model, "the " + mesh->path.string() + " preset's model");
+    } else {
       const std::string field = fmt::format("scene.objects[{}].path", i);
       mesh->path = resolve_mesh_path(app, mesh->path.string(), field);
       try {

@@ -10,9 +10,10 @@ namespace lp::server {
 
 // Mesh paths name an uploaded asset or a file in --data-dir (mesh_paths.hpp); each names a .gltf, .glb
 // or .obj model, loaded here (through the server's model cache) so that a missing or malformed model is
-// refused before the render is queued: a 400 naming the field and what is wrong with the file. Throws
-// MemoryBudgetError when a model does not fit the memory budget. Returns the triangles of all the
-// scene's meshes.
+// refused before the render is queued: a 400 naming the field and what is wrong with the file. A mesh
+// whose model the engine built (a preset's) is counted in the memory budget once (ModelCache::
+// hold_builtin). Throws MemoryBudgetError when a model does not fit the memory budget. Returns the
+// triangles of all the scene's meshes.
 int64_t resolve_meshes(render::SceneDesc& scene, App& app);
 
 }  // namespace lp::server

@@ -169,6 +169,10 @@ CheckedHead check_request_head(std::string_view head, uint64_t max_body) {
       continue;  // the transport decodes the body: httplib reads it as a body that ends with the stream
     } else if (iequals(name, "Range") || iequals(name, "If-Range")) {
       continue;  // ranges are ignored: every response is whole
+    } else if (iequals(name, "Accept-Encoding")) {
+      if (!out.accept_encoding.empty()) out.accept_encoding += ", ";
+      out.accept_encoding.append(value);
+      continue;
     }
     out.text.append(line).append("\r\n");
   }

@@ -43,10 +43,12 @@ class HeadScanner {
   HeadError error_;
 };
 
-// A checked head: the text httplib parses (Range and Transfer-Encoding removed) and how its body is framed.
+// A checked head: the text httplib parses (Range, Transfer-Encoding and Accept-Encoding removed), how its
+// body is framed, and its Accept-Encoding (the server compresses responses itself: compression.hpp).
 struct RequestHead {
   std::string text;
   BodyFraming body;
+  std::string accept_encoding;  // the Accept-Encoding headers' values, joined with ", "
 };
 
 // Checks a complete head (as delimited by HeadScanner); `max_body` is the largest body accepted (413).

@@ -4,6 +4,7 @@
 
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "server/conditional_get.hpp"
 
 namespace lp::server {
 namespace {
@@ -17,6 +18,8 @@ struct ReservedBody {
 
 void send_reserved(httplib::Response& res, std::vector<uint8_t> bytes, const std::string& content_type,
                    MemoryReservation memory) {
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (answer_not_modified(res, text, content_type)) return;
   memory.resize(int64_t(bytes.size()));
   auto body = std::make_shared<ReservedBody>(ReservedBody{std::move(bytes), std::move(memory)});
   const size_t size = body->bytes.size();

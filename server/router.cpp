@@ -6,10 +6,12 @@
 #include <regex>
 
 #include "api/api_error.hpp"
+#include "api/query_policy.hpp"
 #include "engine/core/error.hpp"
 #include "server/http_transport.hpp"
 #include "server/memory_refusal.hpp"
-#include "server/query_policy.hpp"
+#include "server/request_context.hpp"
+#include "server/request_id.hpp"
 
 namespace lp::server {
 namespace {
@@ -40,10 +42,10 @@ Handler guarded(Handler handler) {
     } catch (const Error& e) {
       send_error(res, api::error_code_for(e.kind()), e.what());
     } catch (const std::bad_alloc&) {
-      spdlog::error("{} {}: out of memory", req.method, req.path);
+      spdlog::error("{} {} (request {}): out of memory", req.method, req.path, current_request().id);
       send_error(res, api::ErrorCode::InsufficientStorage, "the server ran out of memory for this request");
     } catch (const std::exception& e) {
-      spdlog::error("{} {}: {}", req.method, req.path, e.what());
+      spdlog::error("{} {} (request {}): {}", req.method, req.path, current_request().id, e.what());
       send_error(res, api::ErrorCode::Internal, e.what());
     }
   };
@@ -82,7 +84,7 @@ httplib::Server::HandlerWithContentReader with_body(Handler handler, PostBody bo
   };
 }
 
-Handler with_query_policy(QueryPolicy policy, Handler handler) {
+Handler with_query_policy(api::QueryPolicy policy, Handler handler) {
   return [policy = std::move(policy), handler = std::move(handler)](const httplib::Request& req,
                                                                     httplib::Response& res) {
     policy.check(req.params);
@@ -90,12 +92,37 @@ Handler with_query_policy(QueryPolicy policy, Handler handler) {
   };
 }
 
+// Names the route in the request's context (for the access log and the metrics).
+Handler with_route(const std::string& path, Handler handler) {
+  return [path, handler = std::move(handler)](const httplib::Request& req, httplib::Response& res) {
+    current_request().route = path;
+    handler(req, res);
+  };
+}
+
+// ETag and Cache-Control on the route's answers, 304 for a matching If-None-Match: a whole body here, a
+// content provider's bytes where send_reserved() makes it.
+Handler with_caching(Caching caching, Handler handler) {
+  return [caching, handler = std::move(handler)](const httplib::Request& req, httplib::Response& res) {
+    RequestContext& r = current_request();
+    r.caching = caching;
+    r.if_none_match = req.get_header_value("If-None-Match");
+    handler(req, res);
+    if (!res.body.empty() && !res.has_header("ETag") &&
+        answer_not_modified(res, res.body, res.get_header_value("Content-Type")))
+      res.body.clear();
+  };
+}
+
 }  // namespace
 
-void Router::add(const std::string& method, const std::string& path, Handler handler, PostBody body) {
+void Router::add(const std::string& method, const std::string& path, Handler handler, PostBody body,
+                 Caching caching) {
   const std::string pattern = to_regex(path);
   routes_.push_back({method, path, std::regex(pattern)});
-  handler = with_query_policy(QueryPolicy(method, path), std::move(handler));
+  handler = with_query_policy(api::QueryPolicy(method, path), std::move(handler));
+  if (caching != Caching::None) handler = with_caching(caching, std::move(handler));
+  handler = with_route(path, std::move(handler));
   if (method == "GET")
     server_.Get(pattern, guarded(std::move(handler)));
   else if (method == "POST")
@@ -104,8 +131,8 @@ void Router::add(const std::string& method, const std::string& path, Handler han
     server_.Delete(pattern, guarded(std::move(handler)));
 }
 
-void Router::get(const std::string& path, Handler handler) {
-  add("GET", path, std::move(handler));
+void Router::get(const std::string& path, Handler handler, Caching caching) {
+  add("GET", path, std::move(handler), PostBody::Json, caching);
 }
 void Router::post(const std::string& path, Handler handler, PostBody body) {
   add("POST", path, std::move(handler), body);
@@ -143,7 +170,10 @@ void send_json(httplib::Response& res, const nlohmann::json& body, int status) {
 }
 
 void send_error(httplib::Response& res, api::ErrorCode code, const std::string& message) {
-  send_json(res, {{"error", {{"code", api::code_name(code)}, {"message", message}}}}, api::http_status(code));
+  if (!res.has_header(kRequestIdHeader)) res.set_header(kRequestIdHeader, new_request_id());
+  const std::string id = res.get_header_value(kRequestIdHeader);
+  send_json(res, {{"error", {{"code", api::code_name(code)}, {"message", message}, {"request_id", id}}}},
+            api::http_status(code));
 }
 
 }  // namespace lp::server

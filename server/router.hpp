@@ -1,7 +1,7 @@
 #pragma once
 // Registers handlers on the httplib server under OpenAPI-style paths ("/api/v1/envmaps/{id}"),
 // keeps the list of routes (checked against api/openapi.yaml by a test), refuses query parameters the
-// document does not declare for the operation (server/query_policy.hpp), and turns every exception
+// document does not declare for the operation (api/query_policy.hpp), and turns every exception
 // into a JSON error response so that no request can take the server down.
 #include <httplib.h>
 
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "api/error_codes.hpp"
+#include "server/conditional_get.hpp"
 
 namespace lp::server {
 
@@ -32,7 +33,9 @@ class Router {
  public:
   explicit Router(httplib::Server& server) : server_(server) {}
 
-  void get(const std::string& path, Handler handler);
+  // `caching`: for a route whose answers are pure results, their ETag and Cache-Control
+  // (conditional_get.hpp).
+  void get(const std::string& path, Handler handler, Caching caching = Caching::None);
   void post(const std::string& path, Handler handler, PostBody body = PostBody::Json);
   void del(const std::string& path, Handler handler);
 
@@ -42,7 +45,7 @@ class Router {
 
  private:
   void add(const std::string& method, const std::string& path, Handler handler,
-           PostBody body = PostBody::Json);
+           PostBody body = PostBody::Json, Caching caching = Caching::None);
 
   httplib::Server& server_;
   std::vector<Route> routes_;
@@ -54,7 +57,8 @@ bool has_json_content_type(const httplib::Request& req);
 // Path parameter n (1-based, in order of appearance) of a route registered with {name} segments.
 std::string path_param(const httplib::Request& req, size_t n);
 
-// Writes {"error":{"code":..,"message":..}} with the code's status.
+// Writes {"error":{"code":..,"message":..,"request_id":..}} with the code's status; the id is the response's
+// X-Request-Id, set to a new one if it has none.
 void send_error(httplib::Response& res, api::ErrorCode code, const std::string& message);
 void send_json(httplib::Response& res, const nlohmann::json& body, int status = 200);
 

@@ -91,8 +91,8 @@ void register_envmap_routes(Router& router, App& app) {
     if (!remove_map(app, id)) throw api::not_found("no environment map with id '" + api::excerpt(id) + "'");
     res.status = 204;
   });
-  router.get("/api/v1/envmaps/{id}/image", endpoint_of(app, image));
-  router.get("/api/v1/envmaps/{id}/distribution", endpoint_of(app, distribution));
+  router.get("/api/v1/envmaps/{id}/image", endpoint_of(app, image), Caching::Revalidate);
+  router.get("/api/v1/envmaps/{id}/distribution", endpoint_of(app, distribution), Caching::Revalidate);
 }
 
 }  // namespace lp::server

@@ -27,7 +27,7 @@ void fresnel(const httplib::Request& req, httplib::Response& res) {
 }  // namespace
 
 void register_fresnel_routes(Router& router, App&) {
-  router.get("/api/v1/fresnel", fresnel);
+  router.get("/api/v1/fresnel", fresnel, Caching::Fresh);
 }
 
 }  // namespace lp::server

@@ -37,7 +37,7 @@ void median_cut_png(App& app, const httplib::Request& req, httplib::Response& re
 
 void register_median_cut_routes(Router& router, App& app) {
   router.post("/api/v1/envmaps/{id}/median-cut", endpoint_of(app, median_cut));
-  router.get("/api/v1/envmaps/{id}/median-cut.png", endpoint_of(app, median_cut_png));
+  router.get("/api/v1/envmaps/{id}/median-cut.png", endpoint_of(app, median_cut_png), Caching::Revalidate);
 }
 
 }  // namespace lp::server

@@ -54,6 +54,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
                                          app.state.get());
   job->hold_memory(std::move(memory));
+  job->count_in(&app.render_counters);
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
   job->save_record();
   if (!app.renders.submit(job)) {
@@ -92,7 +93,6 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   auto memory =
       app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
                          std::string("encoding a render as ") + enum_name(params.format));
-  res.set_header("Cache-Control", "no-store");
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
   send_reserved(res, write_image(pixels, params.format, params.tone), format_mime_type(params.format),
                 std::move(memory));
@@ -192,7 +192,7 @@ void register_render_routes(Router& router, App& app) {
   router.get("/api/v1/renders/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     send_json(res, find_render(app, path_param(req, 1))->status_json());
   });
-  router.get("/api/v1/renders/{id}/image", endpoint_of(app, image));
+  router.get("/api/v1/renders/{id}/image", endpoint_of(app, image), Caching::Revalidate);
   router.get("/api/v1/renders/{id}/events", endpoint_of(app, events));
   router.post("/api/v1/renders/{id}/resume", endpoint_of(app, resume));
   router.del("/api/v1/renders/{id}", endpoint_of(app, cancel));

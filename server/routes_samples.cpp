@@ -2,9 +2,7 @@
 // and GET /envmaps/{id}/samples.png.
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
-
-#include "api/sample_encoding.hpp"
+#include "api/sample_stream.hpp"
 #include "engine/envmap/sample_plot.hpp"
 #include "server/reserved_content.hpp"
 #include "server/routes.hpp"
@@ -12,64 +10,35 @@
 namespace lp::server {
 namespace {
 
-constexpr uint64_t kChunk = 1 << 16;  // samples generated and sent at a time
-
-struct SampleStream {
-  std::shared_ptr<const EnvMapEntry> entry;  // keeps the map alive while streaming
-  std::shared_ptr<const EnvMapSampler> sampler;
-  api::SampleRequest request;
-  bool binary = false;
-  std::vector<EnvSample> buffer;
-  uint64_t next = 0;
+// The stream and the map it reads, kept alive together while the answer is sent.
+struct MapSampleStream {
+  std::shared_ptr<const EnvMapEntry> entry;
+  api::SampleStream stream;
 };
 
-std::string json_prologue(const api::SampleRequest& r) {
-  return fmt::format(R"({{"count":{},"seed":{},"strategy":"{}","luminance":"{}","samples":[)", r.spec.count,
-                     r.spec.seed, enum_name(r.spec.strategy), enum_name(r.luminance));
-}
-
-// Produces the next chunk of the response body; false when there is nothing left.
-bool next_chunk(SampleStream& s, std::string& out) {
-  const uint64_t total = s.request.spec.count;
-  if (s.next >= total) return false;
-  const uint64_t n = std::min(kChunk, total - s.next);
-  s.buffer.resize(n);
-  generate_samples(*s.sampler, s.request.spec, s.next, s.buffer);
-  out.reserve(out.size() + n * (s.binary ? sizeof(float) * api::kSampleRecordFloats : 192));
-  for (uint64_t k = 0; k < n; ++k) {
-    if (s.binary) {
-      api::append_sample_binary(out, s.buffer[k]);
-    } else {
-      if (s.next + k > 0) out.push_back(',');
-      api::append_sample_json(out, s.buffer[k]);
-    }
-  }
-  s.next += n;
-  if (!s.binary && s.next == total) out += "]}";
-  return true;
-}
-
 void samples(App& app, const httplib::Request& req, httplib::Response& res) {
-  auto stream = std::make_shared<SampleStream>();
-  stream->entry = app.envmaps.get(path_param(req, 1));
-  stream->request = api::parse_sample_request(api::parse_json_object(req.body), app.options.limits);
-  stream->sampler = stream->entry->map->sampler(stream->request.luminance);
-  stream->binary = req.get_header_value("Accept").find("application/octet-stream") != std::string::npos;
-  if (stream->binary) {
-    res.set_header("X-Sample-Count", std::to_string(stream->request.spec.count));
+  const auto entry = app.envmaps.get(path_param(req, 1));
+  const auto request = api::parse_sample_request(api::parse_json_object(req.body), app.options.limits);
+  const bool binary = req.get_header_value("Accept").find("application/octet-stream") != std::string::npos;
+  if (binary) {
+    res.set_header("X-Sample-Count", std::to_string(request.spec.count));
     res.set_header("X-Sample-Record-Layout", api::kSampleRecordLayout);
   }
-  const char* type = stream->binary ? "application/octet-stream" : "application/json";
-  if (stream->request.spec.count <= kChunk) {  // small: one body with its length, sent in one piece
-    std::string body = stream->binary ? std::string() : json_prologue(stream->request);
-    next_chunk(*stream, body);
+  auto s = std::make_shared<MapSampleStream>(MapSampleStream{
+      entry, api::SampleStream(entry->map->sampler(request.luminance), request,
+                               binary ? api::SampleEncoding::Binary : api::SampleEncoding::JsonDocument)});
+  const char* type = binary ? "application/octet-stream" : "application/json";
+  if (request.spec.count <=
+      api::SampleStream::kChunk) {  // small: one body with its length, sent in one piece
+    std::string body;
+    s->stream.next(body);
     res.set_content(std::move(body), type);
     return;
   }
-  res.set_chunked_content_provider(type, [stream](size_t, httplib::DataSink& sink) {
-    std::string out = stream->next == 0 && !stream->binary ? json_prologue(stream->request) : std::string();
+  res.set_chunked_content_provider(type, [s](size_t, httplib::DataSink& sink) {
+    std::string out;
     try {
-      if (!next_chunk(*stream, out)) {
+      if (!s->stream.next(out)) {
         sink.done();
         return true;
       }
@@ -101,7 +70,7 @@ void samples_png(App& app, const httplib::Request& req, httplib::Response& res) 
 
 void register_sample_routes(Router& router, App& app) {
   router.post("/api/v1/envmaps/{id}/samples", endpoint_of(app, samples));
-  router.get("/api/v1/envmaps/{id}/samples.png", endpoint_of(app, samples_png));
+  router.get("/api/v1/envmaps/{id}/samples.png", endpoint_of(app, samples_png), Caching::Revalidate);
 }
 
 }  // namespace lp::server

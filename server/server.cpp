@@ -4,7 +4,11 @@
 
 #include <filesystem>
 
+#include "server/compression.hpp"
 #include "server/method_policy.hpp"
+#include "server/probe_routes.hpp"
+#include "server/request_context.hpp"
+#include "server/request_id.hpp"
 #include "server/routes.hpp"
 
 namespace lp::server {
@@ -25,26 +29,25 @@ Server::Server(App& app)
     : app_(app),
       http_(transport_limits(app.options)),
       router_(http_),
-      access_log_(app.options.access_log_sample),
-      browser_(app.options) {
+      access_log_(app.options.access_log_sample, app.options.log_format),
+      browser_(app.options),
+      auth_(app.options.auth_token) {
   http_.set_keep_alive_max_count(1000);
 
   http_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    AccessLog::start_request();
-    if (!accepting_.load()) {
-      res.set_header("Connection", "close");
-      send_error(res, api::ErrorCode::ShuttingDown, "the server is shutting down");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    if (const auto refusal = browser_.refusal(req)) {
-      send_error(res, refusal->code(), refusal->what());
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    return browser_.answer_cors(req, res, router_) ? httplib::Server::HandlerResponse::Handled
-                                                   : httplib::Server::HandlerResponse::Unhandled;
+    return answer_before_routing(req, res) ? httplib::Server::HandlerResponse::Handled
+                                           : httplib::Server::HandlerResponse::Unhandled;
   });
-  http_.set_logger(
-      [this](const httplib::Request& req, const httplib::Response& res) { access_log_.record(req, res); });
+  http_.set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
+    compress_response(current_request().accept_encoding, res);
+  });
+  http_.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
+    const RequestContext& r = current_request();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    app_.http_metrics.record(method_label(req.method), route_label(r.route, req.path, res.status), res.status,
+                             seconds);
+    access_log_.record(req, res, seconds);
+  });
   // Responses httplib makes itself (no route, body too large, ...) get the JSON error shape too.
   http_.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
     if (!res.body.empty()) return;
@@ -80,6 +83,27 @@ Server::Server(App& app)
   register_render_routes(router_, app_);
   register_fresnel_routes(router_, app_);
   register_median_cut_routes(router_, app_);
+  register_metrics_routes(router_, app_);
+}
+
+bool Server::answer_before_routing(const httplib::Request& req, httplib::Response& res) {
+  current_request().id = request_id_for(req);
+  res.set_header(kRequestIdHeader, current_request().id);
+  if (!accepting_.load()) {
+    res.set_header("Connection", "close");
+    send_error(res, api::ErrorCode::ShuttingDown, "the server is shutting down");
+    return true;
+  }
+  if (const auto refusal = browser_.refusal(req)) {
+    send_error(res, refusal->code(), refusal->what());
+    return true;
+  }
+  if (browser_.answer_cors(req, res, router_) || auth_.refuse(req, res)) return true;
+  if (!app_.ready.load() && is_api_path(req.path) && !is_probe(req.path)) {
+    send_not_ready(res);
+    return true;
+  }
+  return false;
 }
 
 // Static files are looked up before the routes, but web/ holds no api/ folder, so every /api path

@@ -8,6 +8,7 @@
 
 #include "server/access_log.hpp"
 #include "server/app.hpp"
+#include "server/bearer_auth.hpp"
 #include "server/browser_policy.hpp"
 #include "server/http_transport.hpp"
 #include "server/router.hpp"
@@ -33,12 +34,16 @@ class Server {
 
  private:
   void mount_web_dir(const std::filesystem::path& dir);
+  // What is answered before the routes, in order: a stop in progress, the browser policy (and CORS
+  // preflights), a missing token, a start still loading. True if `res` is the answer.
+  bool answer_before_routing(const httplib::Request& req, httplib::Response& res);
 
   App& app_;
   HttpTransport http_;
   Router router_;
   AccessLog access_log_;
   BrowserPolicy browser_;
+  BearerAuth auth_;
   std::atomic<bool> accepting_{true};
 };
 

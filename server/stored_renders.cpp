@@ -128,6 +128,7 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
   auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
                                           job->image().image, app.state.get());
   next->hold_memory(std::move(memory));
+  next->count_in(&app.render_counters);
   next->save_record();
   if (!app.renders.submit(next)) {
     if (app.renders.find(job->id()) != job)

@@ -101,5 +101,57 @@ TEST(BrowserPolicy, ListedOriginsGetCorsAnswers) {
                403, "origin_not_allowed");
 }
 
+// A preflight names the headers a page may send (the token, a request id, a revalidation) and how long the
+// answer holds; a page may read the ETag and the request id; the answer depends on Origin (Vary).
+TEST(BrowserPolicy, PreflightsAndTheHeadersAPageMaySendAndRead) {
+  test::ServerProcess s({"--cors-origin", "http://app.example:3000"});
+  const Reply options = test::reply(s.client()->Options(
+      "/api/v1/envmaps/default", {{"Origin", "http://app.example:3000"},
+                                  {"Access-Control-Request-Method", "DELETE"},
+                                  {"Access-Control-Request-Headers", "authorization,x-request-id"}}));
+  EXPECT_EQ(options.status, 204) << options.body;
+  EXPECT_EQ(options.header("Access-Control-Allow-Methods"), "GET, DELETE");
+  EXPECT_EQ(options.header("Access-Control-Allow-Headers"),
+            "Content-Type, Accept, Authorization, X-Request-Id, If-None-Match");
+  EXPECT_EQ(options.header("Access-Control-Max-Age"), "600");
+  EXPECT_EQ(options.header("Vary"), "Origin");
+  EXPECT_TRUE(options.body.empty());
+
+  const Reply image =
+      test::reply(s.client()->Get("/api/v1/envmaps/default/image", {{"Origin", "http://app.example:3000"}}));
+  EXPECT_EQ(image.status, 200);
+  EXPECT_EQ(image.header("Access-Control-Allow-Origin"), "http://app.example:3000");
+  const std::string exposed = image.header("Access-Control-Expose-Headers");
+  for (const char* header : {"ETag", "X-Request-Id", "Retry-After", "Location"})
+    EXPECT_NE(exposed.find(header), std::string::npos) << header;
+  EXPECT_EQ(image.header("Vary"), "Origin");
+  // Without an Origin the answer has no CORS headers, but still varies with it.
+  const Reply plain = test::reply(s.client()->Get("/api/v1/health"));
+  EXPECT_EQ(plain.header("Access-Control-Allow-Origin"), "");
+  EXPECT_EQ(plain.header("Vary").find("Origin"), 0u) << plain.header("Vary");
+}
+
+TEST(BrowserPolicy, PreflightsFromOtherOriginsAreRefused) {
+  for (const auto& args :
+       {std::vector<std::string>{}, std::vector<std::string>{"--cors-origin", "http://a.example"}}) {
+    test::ServerProcess s(args);
+    const Reply r = test::reply(s.client()->Options(
+        "/api/v1/renders", {{"Origin", "http://evil.example"}, {"Access-Control-Request-Method", "POST"}}));
+    expect_error(r, 403, "origin_not_allowed");
+    EXPECT_EQ(r.header("Access-Control-Allow-Origin"), "");
+  }
+}
+
+TEST(BrowserPolicy, AnyOriginWithAStar) {
+  test::ServerProcess s({"--cors-origin", "*"});
+  const Reply r = test::reply(s.client()->Get("/api/v1/health", {{"Origin", "http://anywhere.example"}}));
+  EXPECT_EQ(r.header("Access-Control-Allow-Origin"), "*");
+  EXPECT_EQ(r.header("Vary"), "Accept-Encoding");  // "*" does not depend on the Origin
+  const Reply preflight = test::reply(s.client()->Options(
+      "/api/v1/renders", {{"Origin", "http://anywhere.example"}, {"Access-Control-Request-Method", "POST"}}));
+  EXPECT_EQ(preflight.status, 204);
+  EXPECT_EQ(preflight.header("Access-Control-Allow-Origin"), "*");
+}
+
 }  // namespace
 }  // namespace lp

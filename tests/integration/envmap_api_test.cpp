@@ -25,13 +25,15 @@ json body_json(const httplib::Result& r) {
   return r ? json::parse(r->body, nullptr, false) : json();
 }
 
-// Every error is {"error":{"code","message"}} with the status; `mention` must appear in the message.
+// Every error is {"error":{"code","message","request_id"}} with the status and the response's X-Request-Id;
+// `mention` must appear in the message.
 void expect_error(const httplib::Result& r, int status, const std::string& mention = "") {
   ASSERT_TRUE(r) << "no response";
   EXPECT_EQ(r->status, status) << r->body;
   const json j = json::parse(r->body, nullptr, false);
   ASSERT_TRUE(j.contains("error")) << r->body;
   EXPECT_TRUE(j["error"]["code"].is_string());
+  EXPECT_EQ(j["error"]["request_id"], r->get_header_value("X-Request-Id")) << r->body;
   EXPECT_NE(j["error"]["message"].get<std::string>().find(mention), std::string::npos) << r->body;
 }
 
@@ -79,8 +81,8 @@ TEST(EnvMapApi, UploadsOfEveryFormatGiveTheSameMetadataAsTheEngine) {
     const json m = json::parse(r->body);
     EXPECT_EQ(m["id"], name);
     EXPECT_EQ(m["format"], format);
-    EXPECT_EQ(m["width"], 1024);
-    EXPECT_EQ(m["height"], 512);
+    EXPECT_EQ(m["width"], test::kRealMapWidth);
+    EXPECT_EQ(m["height"], test::kRealMapHeight);
     // power = sum of L * exact pixel solid angle, computed here independently.
     const Image img = read_image_file(test::envmap_path(file)).image;
     double power_r = 0;
@@ -184,8 +186,8 @@ TEST(EnvMapApi, ImageInEveryFormat) {
   ASSERT_EQ(png->status, 200);
   EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
   const DecodedPng d = decode_png(png->body);
-  EXPECT_EQ(d.width, 1024);
-  EXPECT_EQ(d.height, 512);
+  EXPECT_EQ(d.width, test::kRealMapWidth);
+  EXPECT_EQ(d.height, test::kRealMapHeight);
   expect_error(c->Get("/api/v1/envmaps/forest_pfm/image?format=gif"), 400, "format");
   expect_error(c->Get("/api/v1/envmaps/forest_pfm/image?exposure=abc"), 400, "exposure");
   expect_error(c->Get("/api/v1/envmaps/forest_pfm/image?gamma=0"), 400, "gamma");
@@ -197,20 +199,24 @@ TEST(EnvMapApi, DistributionWithAndWithoutSinWeight) {
   const json u =
       body_json(c->Get("/api/v1/envmaps/forest_exr/distribution?sin_weight=false&luminance=rec709"));
   for (const json* j : {&w, &u}) {
-    EXPECT_EQ((*j)["height"], 512);
-    ASSERT_EQ((*j)["row_luminance"].size(), 512u);
-    ASSERT_EQ((*j)["marginal_pdf"].size(), 512u);
-    ASSERT_EQ((*j)["marginal_cdf"].size(), 513u);
+    EXPECT_EQ((*j)["height"], test::kRealMapHeight);
+    ASSERT_EQ((*j)["row_luminance"].size(), size_t(test::kRealMapHeight));
+    ASSERT_EQ((*j)["marginal_pdf"].size(), size_t(test::kRealMapHeight));
+    ASSERT_EQ((*j)["marginal_cdf"].size(), size_t(test::kRealMapHeight + 1));
     EXPECT_EQ((*j)["marginal_cdf"][0], 0.0);
-    EXPECT_DOUBLE_EQ((*j)["marginal_cdf"][512].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ((*j)["marginal_cdf"][size_t(test::kRealMapHeight)].get<double>(), 1.0);
     double sum = 0;
     for (const auto& p : (*j)["marginal_pdf"]) sum += p.get<double>();
     EXPECT_NEAR(sum, 1.0, 1e-9);
   }
-  // sin weighting gives less weight to the pole rows relative to the equator.
-  const double ratio_w = w["marginal_pdf"][0].get<double>() / w["row_luminance"][0].get<double>();
-  const double ratio_eq = w["marginal_pdf"][256].get<double>() / w["row_luminance"][256].get<double>();
-  EXPECT_LT(ratio_w, 0.01 * ratio_eq);
+  // sin weighting scales each row by its solid angle: the pole row against the equator row.
+  const size_t equator = test::kRealMapHeight / 2;
+  const auto row_weight = [&](size_t y) {
+    return w["marginal_pdf"][y].get<double>() / w["row_luminance"][y].get<double>();
+  };
+  const double expected =
+      std::sin(M_PI * 0.5 / test::kRealMapHeight) / std::sin(M_PI * (equator + 0.5) / test::kRealMapHeight);
+  EXPECT_NEAR(row_weight(0) / row_weight(equator), expected, 1e-3 * expected);
   expect_error(c->Get("/api/v1/envmaps/forest_exr/distribution?luminance=max"), 400, "luminance");
   expect_error(c->Get("/api/v1/envmaps/forest_exr/distribution?sin_weight=maybe"), 400, "sin_weight");
 }
@@ -230,8 +236,8 @@ TEST(EnvMapApi, SamplesAsJsonAreReproducibleAndConsistent) {
       EXPECT_NEAR(theta, v * M_PI, 1e-5);
       EXPECT_NEAR(phi, u * 2 * M_PI, 1e-5);
       EXPECT_NEAR(s["direction"][2].get<double>(), std::cos(theta), 1e-5);
-      EXPECT_EQ(s["pixel"][0].get<int>(), int(u * 1024));
-      EXPECT_EQ(s["pixel"][1].get<int>(), int(v * 512));
+      EXPECT_EQ(s["pixel"][0].get<int>(), int(u * test::kRealMapWidth));
+      EXPECT_EQ(s["pixel"][1].get<int>(), int(v * test::kRealMapHeight));
       EXPECT_GT(s["pdf"].get<double>(), 0);
     }
   }
@@ -293,26 +299,27 @@ TEST(EnvMapApi, SamplePicturesShowWhereSamplesFell) {
   auto marks = c->Get("/api/v1/envmaps/forest_exr/samples.png?count=64&seed=5&style=marks");
   ASSERT_EQ(marks->status, 200);
   const DecodedPng m = decode_png(marks->body);
-  ASSERT_EQ(m.width, 1024);
-  ASSERT_EQ(m.height, 512);
+  ASSERT_EQ(m.width, test::kRealMapWidth);
+  ASSERT_EQ(m.height, test::kRealMapHeight);
   auto windows = c->Get("/api/v1/envmaps/forest_exr/samples.png?count=64&seed=5&style=windows");
   const DecodedPng w = decode_png(windows->body);
-  ASSERT_EQ(w.width, 1024);
+  ASSERT_EQ(w.width, test::kRealMapWidth);
   std::set<std::pair<int, int>> near_sample;
   for (const auto& s : j["samples"]) {
     const int x = s["pixel"][0], y = s["pixel"][1];
-    const uint8_t* p = &m.rgb[(size_t(y) * 1024 + x) * 3];
+    const uint8_t* p = &m.rgb[(size_t(y) * test::kRealMapWidth + x) * 3];
     EXPECT_EQ(p[0], 0);
     EXPECT_EQ(p[1], 0);
     EXPECT_EQ(p[2], 255);
     for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx) near_sample.insert({(x + dx + 1024) % 1024, y + dy});
+      for (int dx = -2; dx <= 2; ++dx)
+        near_sample.insert({(x + dx + test::kRealMapWidth) % test::kRealMapWidth, y + dy});
   }
   // Windows: black everywhere except around samples, where the map shows through.
   size_t lit = 0;
-  for (int y = 0; y < 512; ++y)
-    for (int x = 0; x < 1024; ++x) {
-      const uint8_t* p = &w.rgb[(size_t(y) * 1024 + x) * 3];
+  for (int y = 0; y < test::kRealMapHeight; ++y)
+    for (int x = 0; x < test::kRealMapWidth; ++x) {
+      const uint8_t* p = &w.rgb[(size_t(y) * test::kRealMapWidth + x) * 3];
       const bool black = p[0] == 0 && p[1] == 0 && p[2] == 0;
       if (!near_sample.count({x, y}))
         ASSERT_TRUE(black) << x << "," << y;
@@ -327,7 +334,7 @@ TEST(EnvMapApi, SamplePicturesShowWhereSamplesFell) {
 TEST(EnvMapApi, LimitsFromFlags) {
   test::ServerProcess server({"--max-upload-mb", "1", "--max-pixels", "1000", "--max-samples", "100"});
   auto c = server.client();
-  expect_error(upload(*c, "big", test::read_bytes(test::envmap_path("forest.pfm"))), 413);  // 6 MB body
+  expect_error(upload(*c, "big", test::grey_map_pfm(512, 256)), 413, "max-upload-mb");  // 1.5 MiB body
   expect_error(upload(*c, "many", test::read_bytes(test::envmap_path("forest.exr"))), 413, "pixels");
   expect_error(c->Post("/api/v1/envmaps/default/samples", R"({"count":101})", "application/json"), 400,
                "count");

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "engine/image/image_io.hpp"
+#include "support/held_port.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 
@@ -108,27 +109,6 @@ double max_relative_difference(const Image& a, const Image& b) {
   return worst;
 }
 
-// A listening socket on a free loopback port, without SO_REUSEPORT, as any other program would hold it.
-class HeldPort {
- public:
-  HeldPort() : fd_(socket(AF_INET, SOCK_STREAM, 0)) {
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t len = sizeof addr;
-    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&addr), len) != 0 || listen(fd_, 4) != 0 ||
-        getsockname(fd_, reinterpret_cast<sockaddr*>(&addr), &len) != 0)
-      throw std::runtime_error("cannot hold a port");
-    port_ = ntohs(addr.sin_port);
-  }
-  ~HeldPort() { close(fd_); }
-  int port() const { return port_; }
-
- private:
-  int fd_;
-  int port_ = 0;
-};
-
 size_t count(const std::string& text, const std::string& what) {
   size_t n = 0;
   for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -142,7 +122,7 @@ bool exists_in(const fs::path& folder, const std::string& prefix) {
 }
 
 TEST(Lifecycle, PortInUseExitsNonZeroWithinASecondWithOneMessage) {
-  HeldPort held;
+  test::HeldPort held;
   test::TempDir state;
   const auto run = test::run_until_exit(
       {"--port", std::to_string(held.port()), "--state-dir", state.path().string()}, 10s);

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -97,11 +98,58 @@ TEST(Logging, LevelOffWritesNothingButTheAddress) {
       << out;
 }
 
+// --log-format json: every line is one JSON object with time (UTC, ms), level and message; access lines
+// add the request's fields.
+TEST(Logging, JsonLinesCarryTheRequestsFields) {
+  test::ServerProcess s({"--log-format", "json"});
+  get_health(s, 2);
+  ASSERT_EQ(s.client()->Get("/api/v1/envmaps/absent", {{"X-Request-Id", "abc-1"}})->status, 404);
+  const std::string out = output_after_stop(s);
+  const std::regex time(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z)");
+  int lines = 0, access = 0;
+  bool listening = false;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line); ++lines) {
+    SCOPED_TRACE(line);
+    const json j = json::parse(line);  // throws (fails the test) on a line that is not one JSON object
+    ASSERT_TRUE(j.is_object());
+    if (j.value("path", "") == "/api/v1/ready") continue;  // the test's start waiting for the server
+    EXPECT_TRUE(std::regex_match(j["time"].get<std::string>(), time));
+    EXPECT_TRUE(j["level"] == "info" || j["level"] == "warning") << j["level"];
+    ASSERT_TRUE(j["message"].is_string());
+    listening |= j["message"].get<std::string>().find("listening on http://127.0.0.1:") != std::string::npos;
+    if (!j.contains("request_id")) continue;
+    ++access;
+    EXPECT_EQ(j["method"], "GET");
+    EXPECT_EQ(j["client"], "127.0.0.1");
+    EXPECT_GE(j["duration_ms"].get<double>(), 0);
+    const std::string begins = j["method"].get<std::string>() + " " + j["path"].get<std::string>() + " " +
+                               std::to_string(j["status"].get<int>()) + " ";
+    EXPECT_TRUE(j["message"].get<std::string>().starts_with(begins));
+    if (j["path"] == "/api/v1/envmaps/absent") {
+      EXPECT_EQ(j["status"], 404);
+      EXPECT_EQ(j["request_id"], "abc-1");
+      EXPECT_EQ(j["route"], "/api/v1/envmaps/{id}");
+    } else {
+      EXPECT_EQ(j["status"], 200);
+      EXPECT_EQ(j["route"], "/api/v1/health");
+      EXPECT_EQ(j["request_id"].get<std::string>().size(), 16u);
+    }
+  }
+  EXPECT_GT(lines, 5);
+  EXPECT_GE(access, 3);
+  EXPECT_TRUE(listening);
+}
+
 TEST(Logging, BadValuesAreRefusedAtStart) {
   test::StartFailure bad = test::run_until_exit({"--log-level", "verbose"}, std::chrono::seconds(10));
   EXPECT_EQ(bad.exit_status, 2);
   EXPECT_NE(bad.output.find("--log-level takes one of trace|debug|info|warn|error|off, got 'verbose'"),
             std::string::npos)
+      << bad.output;
+  bad = test::run_until_exit({"--log-format", "xml"}, std::chrono::seconds(10));
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_NE(bad.output.find("--log-format takes one of text|json, got 'xml'"), std::string::npos)
       << bad.output;
   bad = test::run_until_exit({"--access-log-sample", "-1"}, std::chrono::seconds(10));
   EXPECT_EQ(bad.exit_status, 2);

@@ -133,7 +133,7 @@ TEST(MedianCutApi, EveryOptionAndAnyCount) {
   const Reply one = post("city_exr", R"({"count":1})");
   ASSERT_EQ(one.status, 200) << one.body;
   const json region = one.body_json()["lights"][0]["region"];
-  EXPECT_EQ(region, (json{{"x0", 0}, {"y0", 0}, {"x1", 1024}, {"y1", 512}}));
+  EXPECT_EQ(region, (json{{"x0", 0}, {"y0", 0}, {"x1", test::kRealMapWidth}, {"y1", test::kRealMapHeight}}));
 }
 
 TEST(MedianCutApi, DefaultsAndRepeatsComeFromTheCache) {
@@ -156,8 +156,8 @@ TEST(MedianCutApi, PicturesHaveTheMapSize) {
   ASSERT_EQ(regions.status, 200) << regions.body;
   EXPECT_EQ(regions.type(), "image/png");
   const Png r = decode_png(regions.body);
-  ASSERT_EQ(r.width, 1024);
-  ASSERT_EQ(r.height, 512);
+  ASSERT_EQ(r.width, test::kRealMapWidth);
+  ASSERT_EQ(r.height, test::kRealMapHeight);
 
   // Every region's top-left cut is green, every light a red dot: check against the JSON.
   const json lights = post("courtyard_exr", R"({"count":16})").body_json()["lights"];
@@ -177,8 +177,8 @@ TEST(MedianCutApi, PicturesHaveTheMapSize) {
   const Reply dots = get_png("courtyard_exr", "?count=16&style=lights&exposure=2&gamma=2.2");
   ASSERT_EQ(dots.status, 200) << dots.body;
   const Png d = decode_png(dots.body);
-  ASSERT_EQ(d.width, 1024);
-  ASSERT_EQ(d.height, 512);
+  ASSERT_EQ(d.width, test::kRealMapWidth);
+  ASSERT_EQ(d.height, test::kRealMapHeight);
   int lit = 0;
   for (int y = 0; y < d.height; ++y)
     for (int x = 0; x < d.width; ++x) lit += d.at(x, y) != std::array<int, 3>{0, 0, 0};
@@ -190,8 +190,8 @@ TEST(MedianCutApi, PicturesHaveTheMapSize) {
     const Reply p = get_png("studio_exr", query);
     ASSERT_EQ(p.status, 200) << query << ": " << p.body;
     const Png img = decode_png(p.body);
-    EXPECT_EQ(img.width, 1024);
-    EXPECT_EQ(img.height, 512);
+    EXPECT_EQ(img.width, test::kRealMapWidth);
+    EXPECT_EQ(img.height, test::kRealMapHeight);
   }
 }
 

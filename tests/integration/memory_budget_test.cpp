@@ -12,7 +12,10 @@
 #include <thread>
 #include <vector>
 
+#include "engine/envmap/envmap.hpp"
+#include "engine/render/textured_preset.hpp"
 #include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -188,6 +191,35 @@ TEST(MemoryBudgetApi, RenderMeshesAreReservedFromTheirTriangleCount) {
                  "insufficient_memory");
   const Reply small = post_json(s, "/api/v1/renders", tiny_render(mesh_scene("small.obj")));
   EXPECT_EQ(small.status, 202) << small.body;
+}
+
+// Bytes held for good (maps, the presets' models, finished renders' images): used minus evictable caches.
+int64_t held_bytes(const test::ServerProcess& s) {
+  const Reply health = get(s, "/api/v1/health");
+  EXPECT_EQ(health.status, 200);
+  const json memory = health.body_json()["memory"];
+  return memory["used_bytes"].get<int64_t>() - memory["cache_bytes"].get<int64_t>();
+}
+
+int64_t finished_render_bytes(const test::ServerProcess& s, const json& body) {
+  const Reply r = post_json(s, "/api/v1/renders", body);
+  EXPECT_EQ(r.status, 202) << r.body;
+  if (r.status != 202) return 0;
+  EXPECT_EQ(test::finished_render(*s.client(), r.body_json()["id"])["status"], "done");
+  return held_bytes(s);
+}
+
+// The textured preset's model (geometry and textures) is counted in the budget when a render first uses
+// it, once: later renders of the preset add only their images. (A budget without room for it refuses it
+// naming it: tests/unit/model_cache_test.cpp.)
+TEST(MemoryBudgetApi, TheTexturedPresetsModelIsHeldInTheBudgetOnce) {
+  const json textured = tiny_render({{"preset", "textured"}});
+  const int64_t image = EnvMap::image_bytes(16, 16);
+  test::ServerProcess s;
+  const int64_t start = held_bytes(s);  // the default map
+  const int64_t first = finished_render_bytes(s, textured);
+  EXPECT_EQ(first - start, render::textured_preset_model()->memory_bytes() + image);
+  EXPECT_EQ(finished_render_bytes(s, textured) - first, image);
 }
 
 TEST(MemoryBudgetApi, FinishedRendersRestoredAtStartHoldTheirImages) {

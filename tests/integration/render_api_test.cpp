@@ -21,6 +21,7 @@
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
+#include "support/white_map.hpp"
 
 namespace lp {
 namespace {
@@ -34,8 +35,8 @@ class TempDataDir {
  public:
   TempDataDir() {
     fs::create_directories(path() / "meshes");
-    fs::copy_file(test::shared_data() / "meshes" / "bunny.obj", path() / "meshes" / "bunny.obj");
-    fs::create_symlink(test::shared_data() / "meshes" / "bunny.obj", path() / "escape.obj");
+    fs::copy_file(test::mesh_path("bunny.obj"), path() / "meshes" / "bunny.obj");
+    fs::create_symlink(test::mesh_path("bunny.obj"), path() / "escape.obj");
   }
   const fs::path& path() const { return dir_.path(); }
 
@@ -203,14 +204,8 @@ TEST(RenderApi, SubmitPollToDoneAndTheImageDecodesInEveryFormat) {
 // pixel on the sphere is 0.5 in expectation (a convex diffuse object sees only the map).
 TEST(RenderApi, FurnaceRenderThroughTheApiMatchesTheAnalyticValue) {
   auto& s = render_server();
-  Image constant(64, 32);
-  for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 64; ++x) constant.set(x, y, {1, 1, 1});
-  const auto pfm = write_pfm(constant);
-  const auto up = s.client()->Post("/api/v1/envmaps?name=constant", reinterpret_cast<const char*>(pfm.data()),
-                                   pfm.size(), "application/octet-stream");
-  ASSERT_TRUE(up);
-  ASSERT_TRUE(up->status == 201 || up->status == 409) << up->body;  // 409: made by an earlier repeat
+  const Reply up = test::upload_white_map(*s.client(), "constant");
+  ASSERT_TRUE(up.status == 201 || up.status == 409) << up.body;  // 409: made by an earlier repeat
 
   const std::string id = submit(s, render_body("constant", 32, 32, 512, {{"preset", "furnace"}}));
   ASSERT_EQ(wait_finished(s, id)["status"], "done");
@@ -438,7 +433,7 @@ TEST(RenderApi, MeshPathsMustStayInsideTheDataDir) {
   const std::string field = "scene.objects[0].path";
   for (const std::string& bad :
        std::vector<std::string>{"../meshes/bunny.obj", "meshes/../../etc/passwd", "/etc/passwd",
-                                (test::shared_data() / "meshes" / "bunny.obj").string(), "escape.obj",
+                                (test::mesh_path("bunny.obj")).string(), "escape.obj",
                                 "meshes/missing.obj", "meshes"})
     expect_field_error(post(s, "/api/v1/renders", render_body("forest", 32, 32, 2, mesh_scene(bad))), field);
 

@@ -1,9 +1,9 @@
 #pragma once
 // A server response as plain values (status, body, headers), so tests can keep and compare it.
-#include <string>
-
 #include <httplib.h>
+
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace lp::test {
 

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "support/child_process.hpp"
 #include "support/test_data.hpp"
 
 namespace lp::test {
@@ -38,39 +39,24 @@ int wait_for_port(const std::string& log_path, int pid) {
 }
 
 // Starts the server with its output to a new log file; returns the pid and sets `log_path`.
-int spawn(const std::vector<std::string>& args, std::string& log_path) {
+int spawn(const std::vector<std::string>& args, std::string& log_path, const Variables& variables) {
   char tmpl[] = "/tmp/lightprobe-server-XXXXXX.log";
   const int fd = mkstemps(tmpl, 4);
   if (fd < 0) throw std::runtime_error("mkstemps failed");
   log_path = tmpl;
 
-  std::vector<std::string> argv_strings = {LIGHTPROBE_SERVER_BIN, "--host", "127.0.0.1", "--port", "0"};
-  argv_strings.insert(argv_strings.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& s : argv_strings) argv.push_back(s.data());
-  argv.push_back(nullptr);
-
-  const int pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  std::vector<std::string> argv = {LIGHTPROBE_SERVER_BIN, "--host", "127.0.0.1", "--port", "0"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const int pid = start_process(argv, fd, fd, {}, variables);
   close(fd);
   return pid;
-}
-
-int decode_status(int status) {
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
 }
 
 std::optional<int> wait_for_exit(int pid, std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   do {
     int status = 0;
-    if (waitpid(pid, &status, WNOHANG) == pid) return decode_status(status);
+    if (waitpid(pid, &status, WNOHANG) == pid) return exit_status_of(status);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   } while (std::chrono::steady_clock::now() < deadline);
   return std::nullopt;
@@ -85,22 +71,36 @@ bool names_state_dir(const std::vector<std::string>& args) {
   return std::find(args.begin(), args.end(), "--state-dir") != args.end();
 }
 
-std::filesystem::path make_temp_dir() {
-  char tmpl[] = "/tmp/lightprobe-state-XXXXXX";
-  if (!mkdtemp(tmpl)) throw std::runtime_error("mkdtemp failed");
-  return tmpl;
-}
-
 }  // namespace
 
-ServerProcess::ServerProcess(const std::vector<std::string>& args) {
+ServerProcess::ServerProcess(const std::vector<std::string>& args, const Variables& variables,
+                             StartUntil until) {
   std::vector<std::string> all = args;
   if (!names_state_dir(args)) {
     own_state_dir_ = make_temp_dir();
     all.insert(all.end(), {"--state-dir", own_state_dir_.string()});
   }
-  pid_ = spawn(all, log_path_);
+  pid_ = spawn(all, log_path_, variables);
   port_ = wait_for_port(log_path_, pid_);
+  if (until != StartUntil::Ready) return;
+  try {
+    wait_until_ready();
+  } catch (...) {
+    kill(pid_, SIGKILL);
+    waitpid(pid_, nullptr, 0);
+    throw;
+  }
+}
+
+void ServerProcess::wait_until_ready() const {
+  auto c = client();
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (const auto r = c->Get("/api/v1/ready"); r && r->status == 200) return;
+    if (!alive()) throw std::runtime_error("server exited while loading; log: " + log_path_);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  throw std::runtime_error("server was not ready within 60 s; log: " + log_path_);
 }
 
 ServerProcess::~ServerProcess() {
@@ -130,10 +130,11 @@ std::optional<int> ServerProcess::wait_exit(std::chrono::milliseconds timeout) {
   return status;
 }
 
-StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout) {
+StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout,
+                            const Variables& variables) {
   std::string log_path;
   const auto start = std::chrono::steady_clock::now();
-  const int pid = spawn(args, log_path);
+  const int pid = spawn(args, log_path, variables);
   StartFailure result;
   const auto status = wait_for_exit(pid, timeout);
   result.elapsed = std::chrono::steady_clock::now() - start;
@@ -145,13 +146,6 @@ StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::m
   result.exit_status = status.value_or(-SIGKILL);
   result.output = read_text(log_path);
   return result;
-}
-
-TempDir::TempDir() : path_(make_temp_dir()) {}
-
-TempDir::~TempDir() {
-  std::error_code ec;
-  std::filesystem::remove_all(path_, ec);
 }
 
 std::unique_ptr<httplib::Client> ServerProcess::client() const {
@@ -168,7 +162,7 @@ bool ServerProcess::alive() const {
 
 ServerProcess& shared_server() {
   static ServerProcess server([] {
-    std::vector<std::string> args = {"--data-dir", shared_data().string()};
+    std::vector<std::string> args = {"--data-dir", LIGHTPROBE_TEST_DATA};
     for (const auto& file : real_envmap_files()) {
       std::string stem = file;
       std::replace(stem.begin(), stem.end(), '.', '_');

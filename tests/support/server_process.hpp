@@ -1,7 +1,8 @@
 #pragma once
 // Starts the real lightprobe-server binary on a free loopback port (--port 0; the port is read
-// from the line the server prints on start) and stops it at the end of the test. Unless the flags name a
-// --state-dir, each server gets a fresh one of its own, removed at the end.
+// from the line the server prints on start), by default waits until it is ready (GET /api/v1/ready
+// answers 200: its maps and state are loaded), and stops it at the end of the test. Unless the flags name
+// a --state-dir, each server gets a fresh one of its own, removed at the end.
 #include <httplib.h>
 
 #include <chrono>
@@ -9,14 +10,22 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "support/child_process.hpp"  // Variables, e.g. {{"LIGHTPROBE_MAX_SAMPLES", "5"}}
+#include "support/temp_dir.hpp"
+
 namespace lp::test {
+
+// How far the constructor waits: until the server is ready, or only until it listens.
+enum class StartUntil { Ready, Listening };
 
 class ServerProcess {
  public:
   // `args` are extra flags, e.g. {"--load", "forest=/abs/forest.exr", "--max-samples", "1000"}.
-  explicit ServerProcess(const std::vector<std::string>& args = {});
+  explicit ServerProcess(const std::vector<std::string>& args = {}, const Variables& variables = {},
+                         StartUntil until = StartUntil::Ready);
   ~ServerProcess();
   ServerProcess(const ServerProcess&) = delete;
   ServerProcess& operator=(const ServerProcess&) = delete;
@@ -26,7 +35,8 @@ class ServerProcess {
   std::string base_url() const { return "http://127.0.0.1:" + std::to_string(port_); }
   // A client with generous timeouts, bound to this server.
   std::unique_ptr<httplib::Client> client() const;
-  bool alive() const;  // the process has not exited
+  bool alive() const;             // the process has not exited
+  void wait_until_ready() const;  // until GET /api/v1/ready answers 200; throws after 60 s
   const std::string& log_path() const { return log_path_; }
   std::string log() const;  // the server's output so far
 
@@ -49,20 +59,8 @@ struct StartFailure {
   std::chrono::duration<double> elapsed{};
   std::string output;
 };
-StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout);
-
-// A fresh, empty temporary directory, removed with everything in it at the end.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+StartFailure run_until_exit(const std::vector<std::string>& args, std::chrono::milliseconds timeout,
+                            const Variables& variables = {});
 
 // A server shared by all tests of a test binary that need no special flags (started on first use,
 // with forest, studio and the other real maps preloaded under their file stems, e.g. "forest_exr").

@@ -4,9 +4,7 @@
 #include "server/archive_unpacker.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +14,7 @@
 #include "server/mesh_paths.hpp"
 #include "server/stored_assets.hpp"
 #include "support/archive_builder.hpp"
+#include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 
 namespace lp::server {
@@ -27,32 +26,13 @@ using test::file_member;
 
 constexpr ArchiveLimits kLimits{1 << 20, 100};
 
-// A fresh folder, removed at the end.
-class Scratch {
- public:
-  Scratch() {
-    static std::atomic<int> counter{0};
-    path_ = fs::temp_directory_path() /
-            ("lightprobe-unpack-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::create_directories(path_);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
 std::span<const uint8_t> bytes_of(const std::string& s) {
   return {reinterpret_cast<const uint8_t*>(s.data()), s.size()};
 }
 
 // The error an unpack of `archive` ends with (its code, and its message in `message`).
 api::ErrorCode refusal(const std::vector<uint8_t>& archive, std::string* message = nullptr) {
-  const Scratch dir;
+  const test::TempDir dir;
   try {
     unpack_archive(archive, dir.path(), kLimits);
   } catch (const api::ApiError& e) {
@@ -85,7 +65,7 @@ std::string refusal_of(std::vector<std::string> paths) {
 }
 
 TEST(ArchiveUnpacker, WritesEveryFileWithItsBytesAndDropsDotComponents) {
-  const Scratch dir;
+  const test::TempDir dir;
   const std::string archive = test::make_archive(
       ArchiveFormat::TarGz, {test::folder_member("./car/"), file_member("./car/car.obj", "v 0 0 0\n"),
                              file_member("car//tex/./a.png", "png"), file_member("car/empty.txt", "")});
@@ -102,7 +82,7 @@ TEST(ArchiveUnpacker, WritesEveryFileWithItsBytesAndDropsDotComponents) {
 // The bytes are counted as they are read: a member of 4 MiB of zeros stops at the 1 MiB limit, and no
 // more than one read block past it reaches the disk.
 TEST(ArchiveUnpacker, StopsWritingOnceTheUnpackedBytesPassTheLimit) {
-  const Scratch dir;
+  const test::TempDir dir;
   test::ArchiveMember zeros = file_member("zeros.bin", "");
   zeros.zero_bytes = 4 << 20;
   const std::string archive = test::make_archive(ArchiveFormat::Zip, {zeros});
@@ -141,7 +121,7 @@ TEST(ArchiveUnpacker, TheFuzzCorpusUnpacksOrIsRefusedAsExpected) {
     return test::read_bytes(test::fuzz_corpus_path("archive_unpacker", file));
   };
   for (const std::string file : {"folder.tar", "folder.tar.gz", "top_level.zip"}) {
-    const Scratch dir;
+    const test::TempDir dir;
     const auto written = unpack_archive(corpus(file), dir.path(), kLimits);
     EXPECT_FALSE(find_model_file(written).empty()) << file;
   }
@@ -167,7 +147,7 @@ TEST(AssetModelFile, IsTheOneAtTheTopLevelOrInsideTheOneTopFolder) {
 
 // What the renderer will load for a .glb or a .gltf asset: the model file in the asset's folder.
 TEST(AssetMeshPaths, GlbAndGltfAssetsResolveToTheirModelFiles) {
-  const Scratch state;
+  const test::TempDir state;
   Options options;
   options.max_memory_mb = 64;
   App app(options);

@@ -1,12 +1,12 @@
 #pragma once
 // Every endpoint accepts exactly the query parameters api/openapi.yaml declares for it, each at most
 // once: anything else is a 400 naming the parameter, so a typo is never silently ignored.
-#include <httplib.h>
-
 #include <string>
 #include <vector>
 
-namespace lp::server {
+#include "api/params.hpp"
+
+namespace lp::api {
 
 class QueryPolicy {
  public:
@@ -14,10 +14,10 @@ class QueryPolicy {
   QueryPolicy(const std::string& method, const std::string& path);
 
   // Throws ApiError 400 "invalid_field" naming the first unknown or repeated parameter.
-  void check(const httplib::Params& params) const;
+  void check(const Query& params) const;
 
  private:
   std::vector<std::string> accepted_;
 };
 
-}  // namespace lp::server
+}  // namespace lp::api
