@@ -1,103 +1,19 @@
 // The dashboard in a real browser (Debian's Chromium through playwright-core) against the real
 // server binary ($LIGHTPROBE_SERVER_BIN) holding a real map: every panel is used as a person would and
 // checked against what the API says. Run: LIGHTPROBE_SERVER_BIN=build/bin/lightprobe-server node --test
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, existsSync, readFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { envmaps, mapWidth, mapHeight, useDashboard, eventually, naturalWidth, waitForImage, screenshot,
+  renderSphere, isRenderPost, download, pngSize, isExr, pfmValues } from './support.mjs';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const envmaps = path.resolve(here, '../../../shared/data/envmaps');
-const serverBin = process.env.LIGHTPROBE_SERVER_BIN;
 const boxGlb = '/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb'; // assimp-testmodels
-const screenshot = process.env.LIGHTPROBE_SCREENSHOT || '/tmp/lightprobe-dashboard.png';
-const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 
-let server; // {proc, base, log}
-let profileDir;
-let stateDir; // the server's own --state-dir, removed after the tests
-let context;
-let page;
-const pageErrors = [];
-
-// Starts the server on a free port and resolves with its base URL once it logs that it listens.
-function startServer() {
-  assert.ok(serverBin, 'set LIGHTPROBE_SERVER_BIN to the lightprobe-server binary');
-  assert.ok(existsSync(path.join(envmaps, 'forest.exr')), `no test map in ${envmaps}`);
-  stateDir = mkdtempSync(path.join(tmpdir(), 'lightprobe-state-'));
-  const proc = spawn(serverBin, ['--port', '0', '--threads', '2', '--data-dir', envmaps,
-    '--state-dir', stateDir, '--load', `forest=${path.join(envmaps, 'forest.exr')}`], { stdio: ['ignore', 'pipe', 'pipe'] });
-  const log = [];
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`server did not start in 30 s:\n${log.join('')}`)), 30000);
-    const onData = (chunk) => {
-      log.push(chunk.toString());
-      const m = log.join('').match(/listening on (http:\/\/127\.0\.0\.1:\d+)/);
-      if (m) {
-        clearTimeout(timer);
-        resolve({ proc, base: m[1], log });
-      }
-    };
-    proc.stdout.on('data', onData);
-    proc.stderr.on('data', onData);
-    proc.on('exit', (code, signal) => {
-      clearTimeout(timer);
-      const message = `server exited (${code ?? signal}):\n${log.join('').slice(-4000)}`;
-      reject(new Error(message));
-      if (server) console.error(message); // died during the tests
-    });
-  });
-}
-
-// Polls a condition of the test process itself (the server's log) until it holds.
-async function eventually(what, check, ms = 10000) {
-  for (const end = Date.now() + ms; !check(); await new Promise((r) => setTimeout(r, 50)))
-    if (Date.now() > end) assert.fail(`timed out waiting for ${what}`);
-}
-
-const naturalWidth = (selector) => page.$eval(selector, (img) => (img.complete ? img.naturalWidth : 0));
-const waitForImage = (selector, width) =>
-  page.waitForFunction(([s, w]) => {
-    const img = document.querySelector(s);
-    return img && img.complete && img.naturalWidth === w;
-  }, [selector, width]);
-
-before(async () => {
-  server = await startServer();
-  profileDir = mkdtempSync(path.join(tmpdir(), 'lightprobe-chromium-'));
-  context = await chromium.launchPersistentContext(profileDir, {
-    executablePath: '/usr/bin/chromium',
-    headless: true,
-    args: CHROMIUM_ARGS,
-    viewport: { width: 1440, height: 900 },
-  });
-  page = context.pages()[0] ?? (await context.newPage());
-  page.setDefaultTimeout(20000);
-  page.on('pageerror', (e) => pageErrors.push(String(e)));
-  await page.goto(`${server.base}/`);
-});
-
-after(async () => {
-  if (page && !page.isClosed()) {
-    // The whole page in one viewport (a full-page capture would repeat the sticky header mid-page).
-    const height = await page.evaluate(() => document.documentElement.scrollHeight).catch(() => 900);
-    await page.setViewportSize({ width: 1440, height }).catch(() => {});
-    await page.screenshot({ path: screenshot }).catch(() => {});
-  }
-  if (context) await context.close();
-  if (profileDir) rmSync(profileDir, { recursive: true, force: true });
-  if (server && server.proc.exitCode === null && server.proc.signalCode === null) {
-    server.proc.removeAllListeners('exit'); // the start-up listener reports deaths during the tests
-    const exited = new Promise((resolve) => server.proc.once('exit', resolve));
-    server.proc.kill('SIGTERM');
-    await exited;
-  }
-  if (stateDir) rmSync(stateDir, { recursive: true, force: true });
+let server, browser, page;
+useDashboard({
+  ready: (s) => ({ server, browser, page } = s),
+  atEnd: (last) => screenshot(last, 'dashboard-end', { wholePage: true }),
 });
 
 test('the server serves the page at / and keeps the API and its JSON 404', async () => {
@@ -118,17 +34,17 @@ test('maps panel lists the loaded map with its metadata and preview', async () =
   const row = page.locator('#map-list tr[data-id="forest"]');
   await row.waitFor();
   const meta = await (await fetch(`${server.base}/api/v1/envmaps/forest`)).json();
-  assert.match(await row.innerText(), /forest\s+1024×512\s+exr/);
+  assert.match(await row.innerText(), new RegExp(`forest\\s+${mapWidth}×${mapHeight}\\s+exr`));
   assert.equal(await page.locator('#map-select').inputValue(), 'forest');
-  await waitForImage('#map-image', 1024);
+  await waitForImage(page, '#map-image', mapWidth);
   const shown = await page.locator('#map-meta').innerText();
-  assert.match(shown, /1024 × 512/);
+  assert.ok(shown.includes(`${mapWidth} × ${mapHeight}`), shown);
   assert.ok(shown.includes(String(Number(meta.max_luminance.toPrecision(4)))), `max luminance ${meta.max_luminance} in:\n${shown}`);
 
   // The exposure slider asks the server for a brighter picture.
   await page.locator('#map-exposure').fill('2');
   await page.waitForFunction(() => document.querySelector('#map-image').src.includes('exposure=2'));
-  await waitForImage('#map-image', 1024);
+  await waitForImage(page, '#map-image', mapWidth);
 });
 
 test('upload shows the server error for a bad file, loads a real one, and delete unloads it', async () => {
@@ -157,13 +73,13 @@ test('upload shows the server error for a bad file, loads a real one, and delete
 });
 
 test('sampling panel shows where samples fall and the marginal pdf / cdf charts', async () => {
-  await waitForImage('#samples-image', 1024);
-  // Both series of the pdf chart are densities in v over the map's 512 rows: each integrates to 1.
-  const sums = await page.waitForFunction(() => {
+  await waitForImage(page, '#samples-image', mapWidth);
+  // Both series of the pdf chart are densities in v over the map's rows: each integrates to 1.
+  const sums = await page.waitForFunction((rows) => {
     const plot = document.querySelector('#pdf-chart')?.chart?.plot;
-    if (!plot || plot.data[0].length !== 512) return null;
+    if (!plot || plot.data[0].length !== rows) return null;
     return plot.data.slice(1).map((ys) => ys.reduce((a, b) => a + b, 0) / ys.length);
-  });
+  }, mapHeight);
   for (const s of await sums.jsonValue()) assert.ok(Math.abs(s - 1) < 1e-6, `pdf integrates to ${s}`);
   const cdfEnd = await page.$eval('#cdf-chart', (c) => c.chart.plot.data.slice(1).map((ys) => ys[ys.length - 1]));
   for (const v of cdfEnd) assert.ok(Math.abs(v - 1) < 1e-6, `cdf ends at ${v}`);
@@ -173,7 +89,7 @@ test('sampling panel shows where samples fall and the marginal pdf / cdf charts'
   await page.locator('#sampling-form [name=strategy]').selectOption('sobol');
   await page.locator('#sampling-form [name=style]').selectOption('windows');
   await page.waitForFunction(() => /strategy=sobol.*style=windows/.test(document.querySelector('#samples-image').src));
-  assert.equal(await naturalWidth('#samples-image'), 1024);
+  assert.equal(await naturalWidth(page, '#samples-image'), mapWidth);
   await page.locator('#sampling-form [name=style]').selectOption('marks');
   await page.waitForFunction(() => /style=marks/.test(document.querySelector('#samples-image').src));
 });
@@ -204,7 +120,7 @@ test('median cut shows N lights of nearly equal energy and their picture', async
   await page.locator('#median-cut-form [name=count]').fill('16');
   await page.locator('#median-cut-stats').filter({ hasText: '16 lights' }).waitFor();
   await page.waitForFunction(() => document.querySelector('#median-cut-image').src.includes('count=16'));
-  await waitForImage('#median-cut-image', 1024);
+  await waitForImage(page, '#median-cut-image', mapWidth);
   const api = await (await fetch(`${server.base}/api/v1/envmaps/forest/median-cut`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"count":16}' })).json();
   const stats = await page.locator('#median-cut-stats').innerText();
   assert.ok(stats.includes(`${Number(api.energy_min.toPrecision(4))} / ${Number(api.energy_max.toPrecision(4))}`), stats);
@@ -212,18 +128,11 @@ test('median cut shows N lights of nearly equal energy and their picture', async
 });
 
 test('a small render streams its progress to done and shows its image', async () => {
-  const form = page.locator('#render-form');
-  await form.locator('[name=preset]').selectOption('sphere');
-  await form.locator('[name=width]').fill('32');
-  await form.locator('[name=height]').fill('32');
-  await form.locator('[name=spp]').fill('4');
-  await page.locator('#render-submit').click();
-  await page.locator('#render-status[data-status=done]').waitFor({ timeout: 45000 });
-  await waitForImage('#render-image', 32);
+  const id = await renderSphere(page, { width: 32, height: 32, spp: 4 });
+  await waitForImage(page, '#render-image', 32);
   assert.match(await page.locator('#render-status').innerText(), /done · 100%/);
   assert.match(await page.locator('#render-stats').innerText(), /4 \/ 4 spp/);
   assert.equal(await page.$eval('#render-progress', (bar) => bar.style.width), '100%');
-  const id = (await page.locator('#render-status').innerText()).split(' ')[0];
   const job = await (await fetch(`${server.base}/api/v1/renders/${id}`)).json();
   assert.equal(job.status, 'done');
   assert.equal(job.spp_done, 4);
@@ -233,14 +142,103 @@ test('a small render streams its progress to done and shows its image', async ()
   assert.ok(await page.locator('#renders-panel .error').isHidden());
 });
 
-// Both figures of the side-by-side view end done with a 48-pixel-wide image and a caption naming the
-// option's state and the render time; the two newest jobs are the request with the option on and off.
+async function finished(id) {
+  for (;;) {
+    const job = await (await fetch(`${server.base}/api/v1/renders/${id}`)).json();
+    if (!['queued', 'running'].includes(job.status)) return job;
+    await new Promise((r) => setTimeout(r, 100));
+  }
+}
+
+test('map rotation, intensity and visibility go with the render; the intensity scales the image', async () => {
+  const form = page.locator('#render-form');
+  await form.locator('[name=rotation_deg]').fill('90');
+  await form.locator('[name=intensity]').fill('2.5');
+  await form.locator('[name=visible]').uncheck();
+  const posted = page.waitForRequest(isRenderPost);
+  const id = await renderSphere(page, { width: 16, height: 16, spp: 2 });
+  const request = (await posted).postDataJSON();
+  assert.deepEqual(request.lighting, { mode: 'envmap', rotation_deg: 90, intensity: 2.5, visible: false });
+
+  // The same request at intensity 1 (same seed): every pixel 2.5 times smaller; the corners (the map,
+  // hidden) black.
+  const answer = await fetch(`${server.base}/api/v1/renders`, {
+    method: 'POST', headers: { 'Content-Type': 'application/json' },
+    body: JSON.stringify({ ...request, lighting: { ...request.lighting, intensity: 1 } }),
+  });
+  assert.equal(answer.status, 202);
+  const unit = await finished((await answer.json()).id);
+  assert.equal(unit.status, 'done');
+  const pfm = async (job) => pfmValues(Buffer.from(await (await fetch(`${server.base}/api/v1/renders/${job}/image?format=pfm`)).arrayBuffer()));
+  const [bright, plain] = [await pfm(id), await pfm(unit.id)];
+  assert.ok(plain.some((v) => v > 0.01));
+  plain.forEach((v, i) => assert.ok(Math.abs(bright[i] - 2.5 * v) <= 1e-5 * 2.5 * v, `value ${i}: ${bright[i]} against 2.5 × ${v}`));
+  assert.deepEqual([bright[0], bright[1], bright[2]], [0, 0, 0]);
+
+  await form.locator('[name=rotation_deg]').fill('0');
+  await form.locator('[name=intensity]').fill('1');
+  await form.locator('[name=visible]').check();
+});
+
+// The message shown next to a control, which must be the next thing after the control's label.
+async function messageBeside(control) {
+  await control.and(page.locator('[aria-invalid=true]')).waitFor();
+  return control.evaluate((c) => {
+    const box = document.getElementById(c.getAttribute('aria-describedby'));
+    const label = c.closest('label');
+    if (!box || label.nextElementSibling !== box) return null;
+    const [a, b] = [label.getBoundingClientRect(), box.getBoundingClientRect()];
+    return Math.abs(b.top - a.top) <= 2 * a.height + 8 ? box.textContent : null;
+  });
+}
+
+test('a value out of range is refused beside its field: by the browser before sending, else by the API', async () => {
+  const posts = [];
+  const onRequest = (request) => { if (isRenderPost(request)) posts.push(request); };
+  page.on('request', onRequest);
+  const form = page.locator('#render-form');
+  const intensity = form.locator('[name=intensity]');
+  await intensity.fill('-1');
+  await page.locator('#render-submit').click();
+  assert.equal(await messageBeside(intensity), await intensity.evaluate((c) => c.validationMessage));
+  assert.match(await messageBeside(intensity), /0/);
+  await intensity.fill('1'); // typing clears the message
+  await form.locator('#render-form-intensity-error').waitFor({ state: 'detached' });
+  assert.equal(posts.length, 0);
+
+  // Past --max-render-spp: the page cannot know that limit, the API's answer names the field.
+  const spp = form.locator('[name=spp]');
+  await spp.fill('10000000');
+  await page.locator('#render-submit').click();
+  assert.equal(await messageBeside(spp), "field 'spp': must be in [1, 65536], got 10000000");
+  assert.equal(posts.length, 1);
+  assert.ok(await page.locator('#renders-panel .error').isHidden());
+  await spp.fill('4');
+  assert.equal(await spp.getAttribute('aria-invalid'), null);
+
+  // A panel that updates as values are typed: median cut past --max-lights, then back.
+  const lights = page.locator('#median-cut-form [name=count]');
+  await lights.fill('100000');
+  assert.equal(await messageBeside(lights), "field 'count': must be in [1, 65536], got 100000");
+  await lights.fill('16');
+  await page.locator('#median-cut-stats').filter({ hasText: '16 lights' }).waitFor();
+  assert.equal(await lights.getAttribute('aria-invalid'), null);
+  page.off('request', onRequest);
+});
+
+// Both figures of the side-by-side view end done with a 48-pixel-wide image (saved as PNG and EXR
+// by its links) and a caption naming the option's state and the render time; the two newest jobs are
+// the request with the option on and off.
 async function expectComparison(option, label) {
   for (const on of ['true', 'false']) {
     const figure = page.locator(`#render-compare figure[data-option=${option}][data-on=${on}]`);
     await figure.and(page.locator('[data-status=done]')).waitFor({ timeout: 45000 });
-    await waitForImage(`#render-compare figure[data-on=${on}] img`, 48);
+    await waitForImage(page, `#render-compare figure[data-on=${on}] img`, 48);
     assert.match(await figure.locator('figcaption').innerText(), new RegExp(`^${label} ${on === 'true' ? 'on' : 'off'} · done · [0-9.e-]+ s$`));
+    const png = await download(page, figure.locator('.downloads [data-format=png]'));
+    assert.match(png.name, /^render-[0-9a-f]{16}\.png$/);
+    assert.deepEqual(pngSize(png.bytes), [48, 32]);
+    assert.ok(isExr((await download(page, figure.locator('.downloads [data-format=exr]'))).bytes));
   }
   const { renders } = await (await fetch(`${server.base}/api/v1/renders`)).json();
   const [first, second] = renders.slice(-2);
@@ -282,17 +280,17 @@ test('a long render shows its passes while running and can be cancelled', async 
   await form.locator('[name=spp]').fill('65536');
   await page.locator('#render-submit').click();
   await page.locator('#render-status[data-status=running]').waitFor();
-  await waitForImage('#render-image', 128); // a finished pass, long before the end
+  await waitForImage(page, '#render-image', 128); // a finished pass, long before the end
   const id = (await page.locator('#render-status').innerText()).split(' ')[0];
   await page.locator('#render-cancel').click();
   await page.locator('#render-status[data-status=cancelled]').waitFor();
   const job = await (await fetch(`${server.base}/api/v1/renders/${id}`)).json();
   assert.equal(job.status, 'cancelled');
   assert.ok(job.spp_done >= 1 && job.spp_done < 65536, `spp_done ${job.spp_done}`);
-  assert.equal(await naturalWidth('#render-image'), 128);
+  assert.equal(await naturalWidth(page, '#render-image'), 128);
   assert.ok(await page.locator('#render-cancel').isDisabled());
   await page.locator(`#render-jobs tr[data-id="${id}"][data-status=cancelled]`).waitFor();
   // Back to the small render for the screenshot, and nothing threw in the page all along.
   await form.locator('[name=spp]').fill('4');
-  assert.deepEqual(pageErrors, []);
+  assert.deepEqual(browser.errors, []);
 });

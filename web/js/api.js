@@ -21,9 +21,10 @@ export async function errorOf(res) {
   return new ApiError(res.status, 'http_error', res.statusText || 'request failed');
 }
 
-// api('/envmaps'), api('/renders', {method: 'POST', json: {...}}), api(path, {method: 'POST', body: file})
-export async function api(path, { method = 'GET', json, body, headers = {} } = {}) {
-  const init = { method, headers: { ...headers } };
+// api('/envmaps'), api('/renders', {method: 'POST', json: {...}}), api(path, {method: 'POST', body: file});
+// `fetch` adds options of fetch() itself (signal, cache).
+export async function api(path, { method = 'GET', json, body, headers = {}, fetch: options = {} } = {}) {
+  const init = { ...options, method, headers: { ...headers } };
   if (json !== undefined) {
     init.body = JSON.stringify(json);
     init.headers['Content-Type'] = 'application/json';

@@ -1,4 +1,6 @@
 // Small DOM and formatting helpers shared by the panels.
+import { showApiFieldError, checkFields } from './field_errors.js';
+
 export const $ = (sel, root = document) => root.querySelector(sel);
 export const $$ = (sel, root = document) => [...root.querySelectorAll(sel)];
 
@@ -44,10 +46,11 @@ export function formValues(form) {
   return out;
 }
 
-// The panel's error line: the API's message, or nothing.
+// An error of the panel: next to the field it names (until that field changes), else on the panel's
+// error line; null clears the line.
 export function showError(panel, err) {
   const box = $('.error', panel);
-  if (!err) {
+  if (!err || showApiFieldError(panel, err)) {
     box.hidden = true;
     box.textContent = '';
     return;
@@ -90,12 +93,22 @@ export function latestOnly(fn) {
   };
 }
 
-// Re-runs `update` when a form's selects change or (debounced) when its numbers are typed.
+// Re-runs `update` when a form's selects change or (debounced) when its numbers are typed; a number
+// out of range gets its message and no update.
 export function autoUpdate(form, update, onChange = update) {
   form.addEventListener('submit', (e) => {
     e.preventDefault();
-    update();
+    if (checkFields(form)) update();
   });
   form.addEventListener('change', (e) => { if (e.target.type !== 'number') onChange(e); });
-  form.addEventListener('input', debounce((e) => { if (e.target.type === 'number' && e.target.checkValidity()) onChange(e); }, 350));
+  form.addEventListener('input', debounce((e) => { if (e.target.type === 'number' && checkFields(form)) onChange(e); }, 350));
+}
+
+// Fills a table's body with `rows`, each cell labelled with its column's heading (a narrow screen
+// shows the rows as cards, each value after its label).
+export function fillTable(table, rows) {
+  const headings = $$('thead th', table).map((th) => th.textContent);
+  for (const row of rows)
+    [...row.cells].forEach((cell, i) => { if (cell.colSpan === 1 && headings[i]) cell.dataset.label = headings[i]; });
+  $('tbody', table).replaceChildren(...rows);
 }

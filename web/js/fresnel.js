@@ -1,8 +1,9 @@
 // The Fresnel panel: rs, rp, unpolarised and Schlick reflectance against the incidence angle for a
 // dielectric pair (Brewster and critical angles marked), or the per-channel curves of a metal.
-import { api } from './api.js';
+import { api, apiUrl } from './api.js';
 import { $, el, num, rgb, busy, formValues, latestOnly, autoUpdate } from './dom.js';
 import { lineChart } from './chart.js';
+import { offerLinks } from './downloads.js';
 
 const panel = () => $('#fresnel-panel');
 const COLORS = { rs: '#5aa9ff', rp: '#f5874f', unpolarized: '#e8ecf1', schlick: '#7bd88f', brewster: '#f5b942', critical: '#d77bf5' };
@@ -70,13 +71,15 @@ function showConductor(t) {
 const update = latestOnly(async (current) => {
   const { preset, eta_i, eta_t } = formValues($('#fresnel-form'));
   const metal = preset.startsWith('metal:') ? preset.slice(6) : null;
-  const query = new URLSearchParams({ eta_i, step: 0.25, ...(metal ? { metal } : { eta_t }) });
+  const query = { eta_i, step: 0.25, ...(metal ? { metal } : { eta_t }) };
   $('#fresnel-form [name=eta_t]').disabled = Boolean(metal);
   await busy(panel(), async () => {
-    const table = await api(`/fresnel?${query}`);
+    const table = await api(`/fresnel?${new URLSearchParams(query)}`);
     if (!current()) return;
     if (table.kind === 'conductor') showConductor(table);
     else showDielectric(table);
+    const name = `fresnel-${metal ?? `${eta_i}-${eta_t}`}`;
+    offerLinks($('#fresnel-downloads'), name, { json: apiUrl('/fresnel', query), csv: apiUrl('/fresnel', { ...query, format: 'csv' }) });
   });
 });
 

@@ -1,12 +1,13 @@
 // Wires the panels to the shared map selection and loads the map list.
-import { api } from './api.js';
 import { $, el } from './dom.js';
+import { withdrawOffer } from './downloads.js';
 import { state, on, selectMap, currentMap } from './state.js';
 import { initMaps, refreshMaps } from './maps.js';
 import { initSampling } from './sampling.js';
 import { initMedianCut } from './median_cut.js';
 import { initFresnel } from './fresnel.js';
 import { initRenders } from './renders.js';
+import { initHealth } from './health.js';
 
 function initMapSelect() {
   const select = $('#map-select');
@@ -19,21 +20,11 @@ function initMapSelect() {
     select.value = id ?? '';
     const m = currentMap();
     $('#map-summary').textContent = m ? `${m.width}×${m.height} ${m.format}` : 'no map loaded';
-    if (!id) ['#map-image', '#samples-image', '#median-cut-image'].forEach((s) => $(s).removeAttribute('src'));
+    if (id) return;
+    ['#map-image', '#samples-image', '#median-cut-image'].forEach((s) => $(s).removeAttribute('src'));
+    ['#map-image', '#samples-image', '#distribution', '#median-cut-image', '#median-cut-lights']
+      .forEach((s) => withdrawOffer($(`${s}-downloads`)));
   });
-}
-
-async function checkHealth() {
-  const badge = $('#health');
-  try {
-    const h = await api('/health');
-    badge.textContent = `server ${h.version}`;
-    badge.className = 'health ok';
-  } catch (e) {
-    badge.textContent = 'server unreachable';
-    badge.title = String(e);
-    badge.className = 'health bad';
-  }
 }
 
 initMapSelect();
@@ -42,5 +33,5 @@ initSampling();
 initMedianCut();
 initFresnel();
 initRenders();
-checkHealth();
+initHealth();
 refreshMaps();

@@ -1,7 +1,9 @@
 // The Maps panel: the loaded maps, the selected one's metadata and preview, upload and delete.
 import { api, apiUrl, loadImage } from './api.js';
-import { $, el, num, rgb, busy, debounce, showError, latestOnly } from './dom.js';
+import { $, el, num, rgb, busy, debounce, showError, latestOnly, fillTable } from './dom.js';
 import { state, on, setMaps, selectMap, currentMap } from './state.js';
+import { offerLinks, offerTable } from './downloads.js';
+import { checkFields } from './field_errors.js';
 
 const panel = () => $('#maps-panel');
 
@@ -27,7 +29,8 @@ function renderList(maps) {
       el('td', { class: 'num' }, rgb(m.power)),
       el('td', {}, el('button', { type: 'button', class: 'danger small', title: `unload ${m.id}`, onclick: (e) => askDelete(e, m.id) }, 'Delete'))));
   if (!rows.length) rows.push(el('tr', {}, el('td', { colspan: 5, class: 'muted' }, 'no maps loaded: upload one below')));
-  $('#map-list tbody').replaceChildren(...rows);
+  fillTable($('#map-list'), rows);
+  offerTable($('#map-list-downloads'), 'envmaps', maps);
 }
 
 // Two clicks delete: the first arms the button for three seconds.
@@ -64,8 +67,13 @@ const showPreview = latestOnly(async (current) => {
   if (!state.map) return;
   const exposure = $('#map-exposure').valueAsNumber;
   $('#map-exposure-value').textContent = exposure > 0 ? `+${exposure}` : String(exposure);
-  await busy(panel(), () =>
-    loadImage($('#map-image'), apiUrl(`/envmaps/${encodeURIComponent(state.map)}/image`, { format: 'png', exposure }), current));
+  const id = state.map;
+  const path = `/envmaps/${encodeURIComponent(id)}/image`;
+  const png = apiUrl(path, { format: 'png', exposure });
+  await busy(panel(), async () => {
+    await loadImage($('#map-image'), png, current);
+    if (current()) offerLinks($('#map-image-downloads'), id, { png, exr: apiUrl(path, { format: 'exr' }) });
+  });
 });
 
 // A file name's stem, made a valid map name.
@@ -73,6 +81,7 @@ const nameFromFile = (file) => file.name.replace(/\.[^.]*$/, '').replace(/[^A-Za
 
 async function upload(event) {
   event.preventDefault();
+  if (!checkFields($('#upload-form'))) return;
   const file = $('#upload-file').files[0];
   if (!file) {
     showError(panel(), 'choose an EXR, PFM or Radiance HDR file first');

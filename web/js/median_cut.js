@@ -1,7 +1,8 @@
 // The Median-cut panel: Debevec's regions and lights for the selected map, with the lights' energies.
 import { api, apiUrl, loadImage } from './api.js';
-import { $, el, num, rgb, busy, formValues, latestOnly, autoUpdate } from './dom.js';
+import { $, el, num, rgb, busy, formValues, latestOnly, autoUpdate, fillTable } from './dom.js';
 import { state, on } from './state.js';
+import { offerLinks, offerTable } from './downloads.js';
 
 const panel = () => $('#median-cut-panel');
 const deg = (rad) => (rad * 180) / Math.PI;
@@ -16,7 +17,7 @@ function showStats(result) {
   ];
   $('#median-cut-stats').replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
   const brightest = [...result.lights].sort((a, b) => b.energy - a.energy).slice(0, 5);
-  $('#median-cut-lights tbody').replaceChildren(...brightest.map((l, i) => {
+  fillTable($('#median-cut-lights'), brightest.map((l, i) => {
     const [x, y, z] = l.direction;
     const r = l.region;
     return el('tr', {},
@@ -36,7 +37,11 @@ const update = latestOnly(async (current) => {
     const result = await api(`/envmaps/${id}/median-cut`, { method: 'POST', json: { count, placement, split, luminance } });
     if (!current()) return;
     showStats(result);
-    await loadImage($('#median-cut-image'), apiUrl(`/envmaps/${id}/median-cut.png`, { count, placement, split, luminance, style, exposure }), current);
+    const name = `${state.map}-median-cut-${count}`;
+    offerTable($('#median-cut-lights-downloads'), `${name}-lights`, result.lights);
+    const png = apiUrl(`/envmaps/${id}/median-cut.png`, { count, placement, split, luminance, style, exposure });
+    await loadImage($('#median-cut-image'), png, current);
+    if (current()) offerLinks($('#median-cut-image-downloads'), name, { png });
   });
 });
 

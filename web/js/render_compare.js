@@ -2,11 +2,18 @@
 // each followed to its end and shown with its render time.
 import { api, apiUrl, loadImage } from './api.js';
 import { $, el, num } from './dom.js';
+import { offerLinks } from './downloads.js';
 
 const ACTIVE = new Set(['queued', 'running']);
 const LABELS = { mipmaps: 'mipmaps', normal_maps: 'normal maps' };
 
 let comparison = 0; // the latest comparison; an older one stops updating the page
+
+// A render's image as the page shows it (PNG at the exposure) and in linear values (EXR).
+export const renderImageUrls = (id, exposure) => ({
+  png: apiUrl(`/renders/${id}/image`, { format: 'png', exposure }),
+  exr: apiUrl(`/renders/${id}/image`, { format: 'exr' }),
+});
 
 async function follow(job, figure, label, current, exposure) {
   const caption = $('figcaption', figure);
@@ -18,25 +25,30 @@ async function follow(job, figure, label, current, exposure) {
     await new Promise((r) => setTimeout(r, 250));
     job = await api(`/renders/${job.id}`);
   }
-  if (job.image_available)
-    await loadImage($('img', figure), apiUrl(`/renders/${job.id}/image`, { format: 'png', exposure }), current);
+  if (job.image_available) {
+    const urls = renderImageUrls(job.id, exposure);
+    await loadImage($('img', figure), urls.png, current);
+    if (current()) offerLinks($('.downloads', figure), `render-${job.id}`, urls);
+  }
   if (job.error) caption.textContent += ` · ${job.error.code}: ${job.error.message}`;
 }
 
-// Submits `body` with `option` true and false and shows both renders in `box`. Resolves once both
-// have ended; rejects with the API's error.
+// Submits `body` with `option` true and false and, once both are accepted, shows both renders in
+// `box`. Resolves once both have ended; rejects with the API's error.
 export async function compareRenders(box, body, option, exposure) {
   const mine = ++comparison;
   const current = () => mine === comparison;
   const sides = [true, false].map((on) => {
     const label = `${LABELS[option]} ${on ? 'on' : 'off'}`;
-    const figure = el('figure', { dataset: { option, on: String(on) } }, el('img', { alt: label }), el('figcaption', {}, label));
+    const figure = el('figure', { dataset: { option, on: String(on) } },
+      el('img', { alt: label }), el('figcaption', {}, label), el('div', { class: 'downloads', hidden: '' }));
     return { on, label, figure };
   });
-  box.replaceChildren(...sides.map((s) => s.figure));
-  box.hidden = false;
   const jobs = [];
   for (const s of sides) jobs.push(await api('/renders', { method: 'POST', json: { ...body, [option]: s.on } }));
+  if (!current()) return jobs;
+  box.replaceChildren(...sides.map((s) => s.figure));
+  box.hidden = false;
   await Promise.all(sides.map((s, i) => follow(jobs[i], s.figure, s.label, current, exposure)));
   return jobs;
 }

@@ -1,10 +1,12 @@
 // The Renders panel: submit a preset scene or an uploaded model (optionally two renders side by side,
 // an option on and off), follow the job through its server-sent events (progress
 // bar, image refreshed after every pass), cancel it, and list every job.
-import { api, apiUrl, errorOf, loadImage, API } from './api.js';
-import { $, el, num, bigNum, busy, formValues, showError } from './dom.js';
+import { api, errorOf, loadImage, API } from './api.js';
+import { $, el, num, bigNum, busy, formValues, showError, fillTable } from './dom.js';
 import { state } from './state.js';
-import { compareRenders } from './render_compare.js';
+import { compareRenders, renderImageUrls } from './render_compare.js';
+import { offerLinks, offerTable, withdrawOffer } from './downloads.js';
+import { checkFields } from './field_errors.js';
 
 const panel = () => $('#renders-panel');
 const ACTIVE = new Set(['queued', 'running']);
@@ -20,8 +22,11 @@ function showImage(job, force = false) {
   if (!force && watched.shownSpp === job.spp_done) return;
   watched.shownSpp = job.spp_done;
   const id = job.id;
-  const src = apiUrl(`/renders/${id}/image`, { format: 'png', exposure: exposure() });
-  showFreshImage($('#render-image'), src, () => watched && watched.id === id).catch((e) => showError(panel(), e));
+  const current = () => watched && watched.id === id;
+  const urls = renderImageUrls(id, exposure());
+  showFreshImage($('#render-image'), urls.png, current)
+    .then(() => { if (current()) offerLinks($('#render-image-downloads'), `render-${id}`, urls); })
+    .catch((e) => showError(panel(), e));
 }
 
 // The image of a running render changes with every pass under the same URL: it is fetched past the
@@ -92,6 +97,7 @@ function watch(job) {
   stopWatching();
   watched = { id: job.id, shownSpp: -1 };
   $('#render-image').removeAttribute('src');
+  withdrawOffer($('#render-image-downloads'));
   showJob(job);
   if (!ACTIVE.has(job.status)) {
     ended(job);
@@ -139,8 +145,9 @@ async function submit(event) {
     showError(panel(), 'load a map first');
     return;
   }
+  if (!checkFields($('#render-form'))) return;
   const v = formValues($('#render-form'));
-  const lighting = { mode: v.mode, rotation_deg: v.rotation_deg };
+  const lighting = { mode: v.mode, rotation_deg: v.rotation_deg, intensity: v.intensity, visible: v.visible };
   if (v.mode.startsWith('median_cut')) lighting.lights = v.lights;
   const body = { envmap: state.map, scene: sceneOf(v.preset), lighting, width: v.width, height: v.height, spp: v.spp,
     max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps };
@@ -184,7 +191,8 @@ export async function refreshJobs() {
       el('td', {}, el('button', { type: 'button', class: 'small', title: ACTIVE.has(j.status) ? 'cancel' : 'remove job and image', onclick: (e) => removeJob(e, j) },
         ACTIVE.has(j.status) ? 'Cancel' : 'Remove'))));
   if (!rows.length) rows.push(el('tr', {}, el('td', { colspan: 8, class: 'muted' }, 'no jobs yet')));
-  $('#render-jobs tbody').replaceChildren(...rows);
+  fillTable($('#render-jobs'), rows);
+  offerTable($('#render-jobs-downloads'), 'renders', list.renders);
 }
 
 export function initRenders() {

@@ -1,0 +1,192 @@
+// What every browser test of the dashboard shares: the real server binary ($LIGHTPROBE_SERVER_BIN)
+// holding a real map, Debian's Chromium through playwright-core, and waits on the page.
+import { before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { mkdtempSync, mkdirSync, rmSync, existsSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const envmaps = path.resolve(here, '../data/envmaps');
+export const [mapWidth, mapHeight] = [256, 128]; // every map in tests/data/envmaps
+export const screenshots = process.env.LIGHTPROBE_SCREENSHOT_DIR || path.join(tmpdir(), 'lightprobe-dashboard');
+const serverBin = process.env.LIGHTPROBE_SERVER_BIN;
+const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync'];
+
+// Starts a server holding the map `forest` (on a free port unless `port` is given; in a fresh state
+// directory unless `stateDir` is given) and resolves once it logs that it listens. A death before
+// stop() is reported; remove() stops it and deletes its state directory.
+export function startServer({ port = 0, stateDir = mkdtempSync(path.join(tmpdir(), 'lightprobe-state-')) } = {}) {
+  assert.ok(serverBin, 'set LIGHTPROBE_SERVER_BIN to the lightprobe-server binary');
+  assert.ok(existsSync(path.join(envmaps, 'forest.exr')), `no test map in ${envmaps}`);
+  const proc = spawn(serverBin, ['--port', String(port), '--threads', '2', '--data-dir', envmaps,
+    '--state-dir', stateDir, '--load', `forest=${path.join(envmaps, 'forest.exr')}`], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const log = [];
+  let started = false;
+  let stopping = false;
+  const exited = new Promise((resolve) => proc.once('exit', resolve));
+  const stop = async (signal = 'SIGTERM') => {
+    stopping = true;
+    if (proc.exitCode === null && proc.signalCode === null) {
+      proc.kill(signal);
+      proc.kill('SIGCONT'); // a stopped process acts on the signal once it runs
+    }
+    await exited;
+  };
+  const remove = async () => {
+    await stop();
+    rmSync(stateDir, { recursive: true, force: true });
+  };
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error(`server did not start in 30 s:\n${log.join('')}`)), 30000);
+    const onData = (chunk) => {
+      log.push(chunk.toString());
+      const m = !started && log.join('').match(/listening on (http:\/\/127\.0\.0\.1:(\d+))/);
+      if (m) {
+        clearTimeout(timer);
+        started = true;
+        resolve({ proc, base: m[1], port: Number(m[2]), log, stateDir, stop, remove });
+      }
+    };
+    proc.stdout.on('data', onData);
+    proc.stderr.on('data', onData);
+    proc.on('exit', (code, signal) => {
+      clearTimeout(timer);
+      const message = `server exited (${code ?? signal}):\n${log.join('').slice(-4000)}`;
+      reject(new Error(message));
+      if (started && !stopping) console.error(message); // died during the tests
+    });
+  });
+}
+
+// Chromium in a fresh profile with one page at `url`; page errors are collected in `errors`.
+export async function openBrowser(url, viewport = { width: 1440, height: 900 }) {
+  const profileDir = mkdtempSync(path.join(tmpdir(), 'lightprobe-chromium-'));
+  const context = await chromium.launchPersistentContext(profileDir, {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    args: CHROMIUM_ARGS,
+    viewport,
+  });
+  const errors = [];
+  const watch = async (page) => {
+    page.setDefaultTimeout(20000);
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(url);
+    return page;
+  };
+  const page = await watch(context.pages()[0] ?? (await context.newPage()));
+  // Another tab on the dashboard, its errors counted with the first's.
+  const newTab = async () => watch(await context.newPage());
+  const close = async () => {
+    await context.close();
+    rmSync(profileDir, { recursive: true, force: true });
+  };
+  return { context, page, errors, newTab, close };
+}
+
+// The before and after hooks of a test file that uses the dashboard: a server of its own, and
+// Chromium on its page. `ready({server, browser, page})` gets them before the tests; `atEnd(page)`
+// runs before the browser closes.
+export function useDashboard({ ready, atEnd = async () => {} }) {
+  const session = {};
+  before(async () => {
+    session.server = await startServer();
+    session.browser = await openBrowser(`${session.server.base}/`);
+    session.page = session.browser.page;
+    ready(session);
+  });
+  after(async () => {
+    if (session.page && !session.page.isClosed()) await atEnd(session.page).catch(() => {});
+    if (session.browser) await session.browser.close();
+    if (session.server) await session.server.remove();
+  });
+}
+
+// Polls a condition of the test process itself (the server's log) until it holds.
+export async function eventually(what, check, ms = 10000) {
+  for (const end = Date.now() + ms; !check(); await new Promise((r) => setTimeout(r, 50)))
+    if (Date.now() > end) assert.fail(`timed out waiting for ${what}`);
+}
+
+export const naturalWidth = (page, selector) => page.$eval(selector, (img) => (img.complete ? img.naturalWidth : 0));
+
+export const waitForImage = (page, selector, width) =>
+  page.waitForFunction(([s, w]) => {
+    const img = document.querySelector(s);
+    return img && img.complete && img.naturalWidth === w;
+  }, [selector, width]);
+
+// Saves the page as NAME.png in the screenshot directory: the viewport, or with `wholePage` the whole
+// page in one viewport of the same width (a full-page capture would repeat the sticky header mid-page).
+export async function screenshot(page, name, { wholePage = false } = {}) {
+  mkdirSync(screenshots, { recursive: true });
+  const viewport = page.viewportSize();
+  if (wholePage) {
+    const height = await page.evaluate(() => document.documentElement.scrollHeight);
+    await page.setViewportSize({ width: viewport.width, height });
+  }
+  await page.screenshot({ path: path.join(screenshots, `${name}.png`) });
+  await page.setViewportSize(viewport);
+}
+
+export const isRenderPost = (request) => request.method() === 'POST' && new URL(request.url()).pathname === '/api/v1/renders';
+
+// A small render of the sphere through the render panel, followed to `status` (done by default).
+export async function renderSphere(page, { width = 32, height = 32, spp = 4, status = 'done' } = {}) {
+  const form = page.locator('#render-form');
+  await form.locator('[name=preset]').selectOption('sphere');
+  await form.locator('[name=compare]').selectOption('');
+  await form.locator('[name=width]').fill(String(width));
+  await form.locator('[name=height]').fill(String(height));
+  await form.locator('[name=spp]').fill(String(spp));
+  const [answer] = await Promise.all([
+    page.waitForResponse((r) => isRenderPost(r.request())),
+    page.locator('#render-submit').click(),
+  ]);
+  const { id } = await answer.json();
+  await page.locator(`#render-status[data-status=${status}]`, { hasText: id }).waitFor({ timeout: 45000 });
+  return id;
+}
+
+// Clicks a download link or button and resolves with the file the browser saved: {name, bytes}.
+export async function download(page, control) {
+  const [saved] = await Promise.all([page.waitForEvent('download'), control.click()]);
+  assert.equal(await saved.failure(), null);
+  return { name: saved.suggestedFilename(), bytes: readFileSync(await saved.path()) };
+}
+
+// A PNG's [width, height] (from its IHDR chunk).
+export function pngSize(bytes) {
+  assert.ok(bytes.subarray(0, 8).equals(Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a])), 'not a PNG');
+  return [bytes.readUInt32BE(16), bytes.readUInt32BE(20)];
+}
+
+export const isExr = (bytes) => bytes.length > 8 && bytes.readUInt32LE(0) === 20000630; // OpenEXR magic
+
+// A PFM image (the API writes little-endian float32, scale -1): its values, 3 per pixel.
+export function pfmValues(bytes) {
+  let offset = 0;
+  const header = [];
+  while (header.length < 3) {
+    const end = bytes.indexOf(0x0a, offset);
+    header.push(bytes.subarray(offset, end).toString('latin1'));
+    offset = end + 1;
+  }
+  assert.equal(header[0], 'PF');
+  assert.ok(Number(header[2]) < 0, 'little-endian');
+  const [width, height] = header[1].split(' ').map(Number);
+  return Array.from({ length: width * height * 3 }, (_, i) => bytes.readFloatLE(offset + 4 * i));
+}
+
+// The rows of a CSV file the page wrote (CRLF line ends; its values here hold no commas or quotes).
+export function csvRows(bytes) {
+  const text = bytes.toString('utf8');
+  assert.ok(text.endsWith('\r\n') && !/[^\r]\n/.test(text), 'CSV lines end in CRLF');
+  assert.ok(!text.includes('"'), 'no quoted values expected');
+  return text.slice(0, -2).split('\r\n').map((line) => line.split(','));
+}
