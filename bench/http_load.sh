@@ -2,7 +2,8 @@
 # HTTP load through the real server over loopback, with wrk (installed by scripts/setup): requests/s and
 # p50/p99 latency of GET /api/v1/health and POST /api/v1/envmaps/default/samples (count 64, Lua script
 # samples_post.lua) at 8, 64 and 256 keep-alive connections, without and then with a render running.
-# Usage: bench/http_load.sh [BUILD_DIR] [SECONDS_PER_RUN]; LIGHTPROBE_SERVER=path picks another binary.
+# Usage: bench/http_load.sh [BUILD_DIR] [SECONDS_PER_RUN]; LIGHTPROBE_SERVER=path picks another binary,
+# LIGHTPROBE_SERVER_FLAGS adds flags ("--render-priority idle" compares the render priorities).
 set -euo pipefail
 build=${1:-build}
 seconds=${2:-10}
@@ -10,7 +11,8 @@ server=${LIGHTPROBE_SERVER:-$build/bin/lightprobe-server}
 here="$(cd "$(dirname "$0")" && pwd)"
 state=$(mktemp -d)
 log=$(mktemp)
-"$server" --port 0 --state-dir "$state" >"$log" 2>&1 &
+# shellcheck disable=SC2086 # the flags are words
+"$server" --port 0 --state-dir "$state" ${LIGHTPROBE_SERVER_FLAGS:-} >"$log" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null; wait $pid 2>/dev/null; rm -rf "$state" "$log"' EXIT
 for _ in $(seq 100); do grep -q 'listening on' "$log" && break; sleep 0.1; done
