@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include "api/brdf_lut_request.hpp"
 #include "api/fresnel_request.hpp"
 #include "api/sample_request.hpp"
+#include "api/sh_request.hpp"
 #include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
@@ -74,6 +76,11 @@ void add_enum_parameters(std::vector<Doc>& d) {
   d.push_back(enum_doc(query(cut + ".png", "get", "split"), std::optional(SplitRule::Median)));
   d.push_back(enum_doc(query(cut + ".png", "get", "style"), std::optional(MedianCutStyle::Regions)));
   d.push_back(enum_doc(query("/api/v1/fresnel", "get", "format"), std::optional(TableFormat::JsonDocument)));
+  d.push_back(enum_doc(query("/api/v1/brdf-lut", "get", "format"), std::optional(ImageFormat::Exr)));
+  const std::string sh = "/api/v1/envmaps/{id}/sh";
+  d.push_back(enum_doc(query(sh, "get", "window"), std::optional(ShWindow::None)));
+  d.push_back(enum_doc(query(sh + ".png", "get", "window"), std::optional(ShWindow::None)));
+  d.push_back(enum_doc(query(sh + ".png", "get", "quantity"), std::optional(ShQuantity::Radiance)));
   d.push_back({query("/api/v1/fresnel", "get", "metal"), metal_names(), {}, {}, {}});
   d.push_back({schema("RenderMaterial", {"oneOf", "type=conductor", "properties", "metal"}),
                metal_names(),
@@ -97,6 +104,11 @@ void add_request_ranges(std::vector<Doc>& d) {
   d.push_back(lower_bound_doc(body(cut, "count"), kLightCount.range.min, kLightCount.fallback));
   d.push_back(
       lower_bound_doc(query(cut + ".png", "get", "count"), kLightCount.range.min, kLightCount.fallback));
+  d.push_back(range_doc(query("/api/v1/brdf-lut", "get", "size"), kDfgLutSize, kDefaultDfgLutSize));
+  const std::string sh = "/api/v1/envmaps/{id}/sh";
+  d.push_back(range_doc(query(sh, "get", "bands"), limits::kShBands, kDefaultShBands));
+  d.push_back(range_doc(query(sh + ".png", "get", "bands"), limits::kShBands, kDefaultShBands));
+  d.push_back(range_doc(query(sh + ".png", "get", "width"), kShImageWidth));
   d.push_back(field_doc({"components", "parameters", "Exposure", "schema"}, kExposure));
   d.push_back(field_doc({"components", "parameters", "Gamma", "schema"}, kGamma));
   const std::string fresnel = "/api/v1/fresnel";

@@ -18,6 +18,8 @@ void register_sample_routes(Router& router, App& app);   // samples, samples.png
 void register_render_routes(Router& router, App& app);   // render jobs: submit, status, image, events, cancel
 void register_fresnel_routes(Router& router, App& app);  // fresnel reflectance tables
 void register_median_cut_routes(Router& router, App& app);  // median-cut lights and pictures
+void register_sh_routes(Router& router, App& app);          // spherical harmonics and their picture
+void register_brdf_lut_routes(Router& router, App& app);    // the split-sum DFG table
 void register_metrics_routes(Router& router, App& app);     // GET /metrics (Prometheus)
 
 }  // namespace lp::server

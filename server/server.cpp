@@ -83,6 +83,8 @@ Server::Server(App& app)
   register_render_routes(router_, app_);
   register_fresnel_routes(router_, app_);
   register_median_cut_routes(router_, app_);
+  register_sh_routes(router_, app_);
+  register_brdf_lut_routes(router_, app_);
   register_metrics_routes(router_, app_);
 }
 

@@ -68,5 +68,9 @@ inline constexpr Range<double> kFresnelIndex{0.001, 1000.0};
 inline constexpr Range<double> kFresnelExtinction{0.0, 1000.0};
 inline constexpr Range<double> kFresnelStepDeg{0.01, 90.0};
 
+// Spherical harmonics: bands 1 to 5 (25 coefficients; the irradiance of band 5 is already below 1% of
+// band 1's, and higher bands ring).
+inline constexpr Range<int> kShBands{1, 5};
+
 }  // namespace limits
 }  // namespace lp

@@ -16,13 +16,15 @@ float node_value(int i) {
   return x * x;
 }
 
+}  // namespace
+
 // E_F(mu, alpha) as the mean over visible normals h of F(wo.h) G(wo, wi) / G1(wo), wi = reflect(wo, h),
 // zero where wi is below the surface. The sampler maps u1 to the squared radius on a disk; the normals
 // that send wi below the horizon lie at its rim, a band of width ~alpha^2 in u1, so u1 = 1 - (1 - t)^3
 // with t on 64 midpoints crowds points there. The integrand is symmetric about the plane of incidence
 // (u2 -> 0.5 - u2), so u2 covers half the disk, [0.25, 0.75], on 8 midpoints. Measured error below
 // 2.2e-4 for mu in [0.02, 1] and alpha in [0.01, 1] (against 8192 x 512 points).
-double albedo_quadrature(const GgxAlbedo::Fresnel& fresnel, float mu, float alpha) {
+double ggx_albedo_quadrature(const GgxAlbedo::Fresnel& fresnel, float mu, float alpha) {
   constexpr int kRadial = 64, kAngular = 8;
   const Ggx ggx(alpha);
   mu = std::max(mu, 1e-4f);  // grazing: the limit
@@ -42,8 +44,6 @@ double albedo_quadrature(const GgxAlbedo::Fresnel& fresnel, float mu, float alph
   }
   return sum / (kRadial * kAngular);
 }
-
-}  // namespace
 
 double cosine_weighted_mean(const std::function<double(double)>& f) {
   constexpr int kSteps = 4096;
@@ -68,7 +68,7 @@ void GgxAlbedo::add_row(const Fresnel& fresnel, float alpha) {
   const size_t start = e_.size();
   for (int i = 0; i < kNodes; ++i) {
     const float mu = node_value(i);
-    e_.push_back(float(alpha > 0 ? albedo_quadrature(fresnel, mu, alpha) : fresnel(mu)));
+    e_.push_back(float(alpha > 0 ? ggx_albedo_quadrature(fresnel, mu, alpha) : fresnel(mu)));
   }
   const Row row(&e_[start], &e_[start], 0.0f, 0.0f);
   averages_.push_back(float(cosine_weighted_mean([&](double mu) { return row(float(mu)); })));

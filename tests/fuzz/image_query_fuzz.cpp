@@ -1,9 +1,11 @@
-// The query parameters of the image endpoints: samples.png, median-cut.png, and the map and render images
-// (format, exposure, gamma). One query goes to every parser.
-// fuzz-dictionary: query.dict
+// The query parameters of the image endpoints: samples.png, median-cut.png, sh and sh.png, brdf-lut, and the
+// map and render images (format, exposure, gamma). One query goes to every parser. fuzz-dictionary:
+// query.dict
+#include "api/brdf_lut_request.hpp"
 #include "api/median_cut_request.hpp"
 #include "api/preview_params.hpp"
 #include "api/sample_request.hpp"
+#include "api/sh_request.hpp"
 #include "fuzz_input.hpp"
 
 namespace {
@@ -24,6 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const lp::api::RequestLimits limits;
   parse([&] { lp::api::parse_sample_image_query(q, limits); });
   parse([&] { lp::api::parse_median_cut_image_query(q, limits); });
+  parse([&] { lp::api::parse_sh_query(q); });
+  parse([&] { lp::api::parse_sh_image_query(q); });
+  parse([&] { lp::api::parse_brdf_lut_query(q); });
   parse([&] { lp::api::parse_preview_params(q); });
   return 0;
 }

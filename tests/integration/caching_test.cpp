@@ -95,8 +95,10 @@ TEST(Caching, EveryPureResultRoute) {
       {"/api/v1/envmaps/default/distribution", "no-cache"},
       {"/api/v1/envmaps/default/samples.png?count=16", "no-cache"},
       {"/api/v1/envmaps/default/median-cut.png?count=4", "no-cache"},
+      {"/api/v1/envmaps/default/sh.png?width=64", "no-cache"},
       {"/api/v1/renders/" + id + "/image", "no-cache"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5", "max-age=3600"},
+      {"/api/v1/brdf-lut?size=8", "max-age=3600"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5&format=csv", "max-age=3600"},
       {"/api/v1/openapi.yaml", "max-age=3600"}};
   for (const auto& [path, cache_control] : routes) {

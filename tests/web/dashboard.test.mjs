@@ -127,6 +127,24 @@ test('median cut shows N lights of nearly equal energy and their picture', async
   assert.equal(await page.locator('#median-cut-lights tbody tr').count(), 5);
 });
 
+test('the SH panel shows the reconstruction, the API\'s coefficients and the BRDF table', async () => {
+  await page.locator('#sh-form [name=bands]').selectOption('2');
+  await page.waitForFunction(() => document.querySelector('#sh-image').src.includes('bands=2'));
+  await waitForImage(page, '#sh-image', mapWidth);
+  await page.locator('#sh-coefficients tbody tr').nth(3).waitFor();
+  assert.equal(await page.locator('#sh-coefficients tbody tr').count(), 4);
+  const api = await (await fetch(`${server.base}/api/v1/envmaps/forest/sh?bands=2`)).json();
+  const first = await page.locator('#sh-coefficients tbody tr').first().innerText();
+  const l00 = api.radiance.coefficients[0].rgb.map((x) => Number(x.toPrecision(4))).join(', ');
+  assert.ok(first.includes(`[${l00}]`), `${first} vs ${l00}`);
+  await page.locator('#sh-form [name=quantity]').selectOption('lambertian');
+  await page.waitForFunction(() => document.querySelector('#sh-image').src.includes('quantity=lambertian'));
+  await page.locator('#lut-form [name=size]').selectOption('64');
+  await page.waitForFunction(() => document.querySelector('#lut-image').src.includes('size=64'));
+  await waitForImage(page, '#lut-image', 64);
+  assert.equal(await page.locator('#lut-image-downloads a[data-format=exr]').getAttribute('download'), 'brdf-lut-64.exr');
+});
+
 test('a small render streams its progress to done and shows its image', async () => {
   const id = await renderSphere(page, { width: 32, height: 32, spp: 4 });
   await waitForImage(page, '#render-image', 32);

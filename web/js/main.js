@@ -5,6 +5,7 @@ import { state, on, selectMap, currentMap } from './state.js';
 import { initMaps, refreshMaps } from './maps.js';
 import { initSampling } from './sampling.js';
 import { initMedianCut } from './median_cut.js';
+import { initIbl } from './ibl.js';
 import { initFresnel } from './fresnel.js';
 import { initRenders } from './renders.js';
 import { initHealth } from './health.js';
@@ -21,8 +22,9 @@ function initMapSelect() {
     const m = currentMap();
     $('#map-summary').textContent = m ? `${m.width}×${m.height} ${m.format}` : 'no map loaded';
     if (id) return;
-    ['#map-image', '#samples-image', '#median-cut-image'].forEach((s) => $(s).removeAttribute('src'));
-    ['#map-image', '#samples-image', '#distribution', '#median-cut-image', '#median-cut-lights']
+    ['#map-image', '#samples-image', '#median-cut-image', '#sh-image'].forEach((s) => $(s).removeAttribute('src'));
+    ['#map-image', '#samples-image', '#distribution', '#median-cut-image', '#median-cut-lights', '#sh-image',
+      '#sh-coefficients']
       .forEach((s) => withdrawOffer($(`${s}-downloads`)));
   });
 }
@@ -31,6 +33,7 @@ initMapSelect();
 initMaps();
 initSampling();
 initMedianCut();
+initIbl();
 initFresnel();
 initRenders();
 initHealth();

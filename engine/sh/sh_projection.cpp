@@ -1,0 +1,137 @@
+#include "engine/sh/sh_projection.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "engine/core/constants.hpp"
+#include "engine/envmap/envmap.hpp"
+#include "engine/envmap/latlong.hpp"
+#include "engine/image/image.hpp"
+
+namespace lp {
+namespace {
+
+// cos(m phi_x) and sin(m phi_x) for every column and m = 0 .. bands - 1.
+struct ColumnTrig {
+  int bands;
+  std::vector<double> cos_sin;  // [x][m][cos, sin]
+
+  ColumnTrig(int width, int bands_) : bands(bands_), cos_sin(size_t(width) * bands_ * 2) {
+    for (int x = 0; x < width; ++x) {
+      const double phi = 2 * kPi * (x + 0.5) / width;
+      for (int m = 0; m < bands; ++m) {
+        cos_sin[(size_t(x) * bands + m) * 2] = std::cos(m * phi);
+        cos_sin[(size_t(x) * bands + m) * 2 + 1] = std::sin(m * phi);
+      }
+    }
+  }
+  const double* at(int x) const { return &cos_sin[size_t(x) * bands * 2]; }
+};
+
+// One row's contribution: the row sums S_m = sum_x L cos(m phi), T_m = sum_x L sin(m phi) times the
+// row's solid angle and the theta part of each Y_lm. Rows are summed in order afterwards, so the result
+// does not depend on the thread count.
+std::vector<ShRgb> project_row(const Image& image, int y, int bands, const ColumnTrig& trig) {
+  std::array<std::array<double, 3>, kMaxShBands> cos_sum{}, sin_sum{};
+  const float* row = image.row(y);
+  for (int x = 0; x < image.width(); ++x) {
+    const double* cs = trig.at(x);
+    for (int m = 0; m < bands; ++m)
+      for (int c = 0; c < 3; ++c) {
+        cos_sum[m][c] += double(row[3 * x + c]) * cs[2 * m];
+        sin_sum[m][c] += double(row[3 * x + c]) * cs[2 * m + 1];
+      }
+  }
+  const double d_omega = latlong::pixel_solid_angle(y, image.width(), image.height());
+  const ShBasis p = sh_legendre(bands, std::cos(latlong::row_centre_theta(y, image.height())));
+  std::vector<ShRgb> out(size_t(sh_coefficient_count(bands)));
+  for (int l = 0; l < bands; ++l)
+    for (int m = 0; m <= l; ++m) {
+      const double k = (m == 0 ? 1 : std::sqrt(2.0)) * sh_normalisation(l, m) * p[sh_index(l, m)] * d_omega;
+      for (int c = 0; c < 3; ++c) {
+        out[size_t(sh_index(l, m))][c] = k * cos_sum[m][c];
+        if (m > 0) out[size_t(sh_index(l, -m))][c] = k * sin_sum[m][c];
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+ShCoefficients ShCoefficients::truncated(int keep_bands) const {
+  ShCoefficients out{keep_bands, rgb};
+  out.rgb.resize(size_t(sh_coefficient_count(keep_bands)));
+  return out;
+}
+
+ShRgb ShCoefficients::evaluate(double x, double y, double z) const {
+  const ShBasis basis = sh_basis(bands, x, y, z);
+  ShRgb out{};
+  for (size_t i = 0; i < rgb.size(); ++i)
+    for (int c = 0; c < 3; ++c) out[c] += rgb[i][c] * basis[i];
+  return out;
+}
+
+ShCoefficients project_sh(const Image& latlong, int bands) {
+  const ColumnTrig trig(latlong.width(), bands);
+  std::vector<std::vector<ShRgb>> rows(size_t(latlong.height()));
+  tbb::parallel_for(0, latlong.height(),
+                    [&](int y) { rows[size_t(y)] = project_row(latlong, y, bands, trig); });
+  ShCoefficients out{bands, std::vector<ShRgb>(size_t(sh_coefficient_count(bands)))};
+  for (const auto& row : rows)
+    for (size_t i = 0; i < row.size(); ++i)
+      for (int c = 0; c < 3; ++c) out.rgb[i][c] += row[i][c];
+  return out;
+}
+
+std::shared_ptr<const ShProjection> sh_projection_cached(const EnvMap& map, bool* hit) {
+  if (hit) *hit = true;
+  const int64_t bytes = int64_t(sizeof(ShProjection)) + kMaxShCoefficients * int64_t(sizeof(ShRgb));
+  return map.derived<ShProjection>("sh", bytes, [&] {
+    if (hit) *hit = false;
+    const auto start = std::chrono::steady_clock::now();
+    ShProjection result{project_sh(map.image()), 0};
+    result.elapsed_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return std::make_shared<const ShProjection>(std::move(result));
+  });
+}
+
+std::vector<double> sh_window_factors(ShWindow window, int bands) {
+  std::vector<double> f(static_cast<size_t>(bands), 1.0);
+  for (int l = 1; l < bands; ++l) {
+    const double t = double(l) / bands;
+    if (window == ShWindow::Hann) f[size_t(l)] = 0.5 * (1 + std::cos(kPi * t));
+    if (window == ShWindow::Lanczos) f[size_t(l)] = std::sin(kPi * t) / (kPi * t);
+  }
+  return f;
+}
+
+ShCoefficients scaled_by_band(const ShCoefficients& c, const std::vector<double>& factors) {
+  ShCoefficients out = c;
+  for (int l = 0; l < c.bands; ++l)
+    for (int m = -l; m <= l; ++m)
+      for (double& v : out.rgb[size_t(sh_index(l, m))]) v *= factors[size_t(l)];
+  return out;
+}
+
+// 2 pi (-1)^(l/2 - 1) / ((l + 2)(l - 1)) * l! / (2^l ((l/2)!)^2) for even l >= 2; 0 for odd l > 1.
+double sh_cosine_lobe_factor(int l) {
+  if (l == 0) return kPi;
+  if (l == 1) return 2 * kPi / 3;
+  if (l % 2 == 1) return 0;
+  double ratio = 1;  // l! / (2^l ((l/2)!)^2)
+  for (int k = 1; k <= l / 2; ++k) ratio *= double(l / 2 + k) / (4.0 * k);
+  const double sign = (l / 2 - 1) % 2 == 0 ? 1 : -1;
+  return 2 * kPi * sign / ((l + 2) * (l - 1)) * ratio;
+}
+
+std::vector<double> sh_cosine_lobe_factors(int bands) {
+  std::vector<double> f(static_cast<size_t>(bands));
+  for (int l = 0; l < bands; ++l) f[size_t(l)] = sh_cosine_lobe_factor(l);
+  return f;
+}
+
+}  // namespace lp
