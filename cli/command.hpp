@@ -23,5 +23,7 @@ Command median_cut_command();
 Command fresnel_command();
 Command render_command();
 Command convert_command();
+Command sh_command();
+Command brdf_lut_command();
 
 }  // namespace lp::cli

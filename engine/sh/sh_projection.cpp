@@ -7,7 +7,6 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/envmap/envmap.hpp"
-#include "engine/envmap/latlong.hpp"
 #include "engine/image/image.hpp"
 
 namespace lp {
@@ -30,8 +29,39 @@ struct ColumnTrig {
   const double* at(int x) const { return &cos_sin[size_t(x) * bands * 2]; }
 };
 
-// One row's contribution: the row sums S_m = sum_x L cos(m phi), T_m = sum_x L sin(m phi) times the
-// row's solid angle and the theta part of each Y_lm. Rows are summed in order afterwards, so the result
+// The theta part of Y_lm integrated over row y: the integral from theta_0 to theta_1 of
+// K_lm P_l^m(cos theta) sin theta, by 8-point Gauss-Legendre (exact to rounding for these smooth
+// polynomials over a row), at [sh_index(l, m)] for m >= 0.
+ShBasis row_theta_integrals(int y, int height, int bands) {
+  static constexpr std::array<double, 4> kNodes = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                                                   0.9602898564975363};
+  static constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873,
+                                                     0.2223810344533745, 0.1012285362903763};
+  const double t0 = kPi * y / height, t1 = kPi * (y + 1) / height;
+  const double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
+  ShBasis out{};
+  for (size_t i = 0; i < kNodes.size(); ++i)
+    for (const double sign : {-1.0, 1.0}) {
+      const double theta = mid + sign * half * kNodes[i];
+      const ShBasis p = sh_legendre(bands, std::cos(theta));
+      for (int l = 0; l < bands; ++l)
+        for (int m = 0; m <= l; ++m)
+          out[size_t(sh_index(l, m))] +=
+              kWeights[i] * half * std::sin(theta) * sh_normalisation(l, m) * p[sh_index(l, m)];
+    }
+  return out;
+}
+
+// The phi part of Y_lm integrated over one column of width dphi centred at phi: cos(m phi) (or
+// sin(m phi)) times dphi sinc(m dphi / 2); this is the factor beside the centre's cosine and sine.
+double column_phi_factor(int m, double dphi) {
+  const double x = 0.5 * m * dphi;
+  return m == 0 ? dphi : dphi * std::sin(x) / x;
+}
+
+// One row's contribution: the row sums S_m = sum_x L cos(m phi_x), T_m = sum_x L sin(m phi_x) times the
+// integrals of each Y_lm's theta and phi parts over a pixel of the row, so that every pixel counts as a
+// patch of constant radiance, integrated exactly. Rows are summed in order afterwards, so the result
 // does not depend on the thread count.
 std::vector<ShRgb> project_row(const Image& image, int y, int bands, const ColumnTrig& trig) {
   std::array<std::array<double, 3>, kMaxShBands> cos_sum{}, sin_sum{};
@@ -44,12 +74,13 @@ std::vector<ShRgb> project_row(const Image& image, int y, int bands, const Colum
         sin_sum[m][c] += double(row[3 * x + c]) * cs[2 * m + 1];
       }
   }
-  const double d_omega = latlong::pixel_solid_angle(y, image.width(), image.height());
-  const ShBasis p = sh_legendre(bands, std::cos(latlong::row_centre_theta(y, image.height())));
+  const double dphi = 2 * kPi / image.width();
+  const ShBasis theta = row_theta_integrals(y, image.height(), bands);
   std::vector<ShRgb> out(size_t(sh_coefficient_count(bands)));
   for (int l = 0; l < bands; ++l)
     for (int m = 0; m <= l; ++m) {
-      const double k = (m == 0 ? 1 : std::sqrt(2.0)) * sh_normalisation(l, m) * p[sh_index(l, m)] * d_omega;
+      const double k =
+          (m == 0 ? 1 : std::sqrt(2.0)) * theta[size_t(sh_index(l, m))] * column_phi_factor(m, dphi);
       for (int c = 0; c < 3; ++c) {
         out[size_t(sh_index(l, m))][c] = k * cos_sum[m][c];
         if (m > 0) out[size_t(sh_index(l, -m))][c] = k * sin_sum[m][c];

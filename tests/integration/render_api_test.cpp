@@ -431,10 +431,9 @@ TEST(RenderApi, MeshPathsMustStayInsideTheDataDir) {
   EXPECT_EQ(st["status"], "done") << st.dump();
 
   const std::string field = "scene.objects[0].path";
-  for (const std::string& bad :
-       std::vector<std::string>{"../meshes/bunny.obj", "meshes/../../etc/passwd", "/etc/passwd",
-                                (test::mesh_path("bunny.obj")).string(), "escape.obj",
-                                "meshes/missing.obj", "meshes"})
+  for (const std::string& bad : std::vector<std::string>{
+           "../meshes/bunny.obj", "meshes/../../etc/passwd", "/etc/passwd",
+           (test::mesh_path("bunny.obj")).string(), "escape.obj", "meshes/missing.obj", "meshes"})
     expect_field_error(post(s, "/api/v1/renders", render_body("forest", 32, 32, 2, mesh_scene(bad))), field);
 
   test::ServerProcess no_data_dir;  // without --data-dir no path is accepted

@@ -60,7 +60,7 @@ TEST(ShApi, AWhiteMapIsTwoRootPiOfRadianceAndPiOfIrradiance) {
 }
 
 TEST(ShApi, TheAnswerStatesItsConventions) {
-  const json j = get("/api/v1/envmaps/default/sh").body_json();
+  const json j = get("/api/v1/envmaps/forest_exr/sh").body_json();
   EXPECT_EQ(j["bands"], 3);
   EXPECT_EQ(j["radiance"]["coefficients"].size(), 9u);
   EXPECT_EQ(j["convention"]["condon_shortley_phase"], false);
@@ -111,13 +111,13 @@ TEST(ShApi, ThePictureOfAWhiteMapIsWhite) {
 TEST(ShApi, BadQueriesAre400sNamingTheParameter) {
   for (const std::string query :
        {"bands=0", "bands=6", "bands=x", "window=box", "irradiance=maybe", "band=3"}) {
-    const Reply r = get("/api/v1/envmaps/default/sh?" + query);
+    const Reply r = get("/api/v1/envmaps/forest_exr/sh?" + query);
     EXPECT_EQ(r.status, 400) << query;
     const std::string name = query.substr(0, query.find('='));
     EXPECT_NE(r.body.find("'" + name + "'"), std::string::npos) << query << ": " << r.body;
   }
   for (const std::string query : {"width=1", "width=4097", "quantity=irradiance", "irradiance=true"}) {
-    const Reply r = get("/api/v1/envmaps/default/sh.png?" + query);
+    const Reply r = get("/api/v1/envmaps/forest_exr/sh.png?" + query);
     EXPECT_EQ(r.status, 400) << query << ": " << r.body;
   }
   EXPECT_EQ(get("/api/v1/envmaps/no_such_map/sh").status, 404);

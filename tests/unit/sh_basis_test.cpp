@@ -69,7 +69,7 @@ TEST(ShBasis, OrthonormalOverTheSphere) {
   std::vector<double> gram(kMaxShCoefficients * kMaxShCoefficients, 0.0);
   for (int py = 0; py < h; ++py)
     for (int px = 0; px < w; ++px) {
-      const Vec3 d = latlong::direction({(px + 0.5f) / w, (py + 0.5f) / h});
+      const Vec3 d = latlong::direction({(float(px) + 0.5f) / float(w), (float(py) + 0.5f) / float(h)});
       const ShBasis y = sh_basis(kMaxShBands, d.x, d.y, d.z);
       const double d_omega = latlong::pixel_solid_angle(py, w, h);
       for (int i = 0; i < kMaxShCoefficients; ++i)

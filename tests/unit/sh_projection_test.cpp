@@ -21,7 +21,8 @@ Image map_of(int w, int h, const std::function<Rgb(Vec3)>& radiance) {
   Image image(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      image.set(x, y, radiance(latlong::direction({(x + 0.5f) / w, (y + 0.5f) / h})));
+      image.set(x, y,
+                radiance(latlong::direction({(float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h)})));
   return image;
 }
 
@@ -45,9 +46,9 @@ TEST(ShProjection, AConstantMapIsTwoRootPiInL00AndPiOfIrradiance) {
   const ShCoefficients c = project_sh(one);
   for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.rgb[0][ch], 2 * std::sqrt(kPi), 1e-12);
   for (size_t i = 1; i < c.rgb.size(); ++i)
-    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.rgb[i][ch], 0.0, 2e-4) << i;  // the rows' quadrature
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.rgb[i][ch], 0.0, 1e-12) << i;
   const ShCoefficients e = irradiance(c.truncated(3));
-  for (const Vec3 n : normals(20)) EXPECT_NEAR(e.evaluate(n.x, n.y, n.z)[1], kPi, 1e-3);
+  for (const Vec3 n : normals(20)) EXPECT_NEAR(e.evaluate(n.x, n.y, n.z)[1], kPi, 1e-12);
 }
 
 TEST(ShProjection, ShiftingColumnsRotatesEachBandPairAboutZ) {
@@ -99,42 +100,63 @@ double exact_irradiance(const Image& map, Vec3 n) {
   for (int y = 0; y < map.height(); ++y) {
     const double d_omega = latlong::pixel_solid_angle(y, map.width(), map.height());
     for (int x = 0; x < map.width(); ++x) {
-      const Vec3 d = latlong::direction({(x + 0.5f) / map.width(), (y + 0.5f) / map.height()});
+      const Vec3 d = latlong::direction(
+          {(float(x) + 0.5f) / float(map.width()), (float(y) + 0.5f) / float(map.height())});
       sum += map.at(x, y).y * std::max(0.0f, dot(n, d)) * d_omega;
     }
   }
   return sum;
 }
 
-// Band 3 (9 coefficients) against the exact irradiance at 64 normals: the largest error relative to the
-// map's mean irradiance. Smooth skies stay within about 5%; the studio's small bright softboxes and the
-// low sun of sunrise put more power above band 3.
+// SH irradiance against the exact irradiance at 256 normals, errors relative to the map's mean
+// irradiance: the root mean square and the largest. Band 3 (9 coefficients), measured on tests/data
+// (256 x 128): RMS 3.0% (forest), 4.2% (courtyard), 4.5% (city), 8.0% (studio's softboxes), 9.7%
+// (sunrise's low sun); the largest errors, 8% to 23%, sit where a bright source meets the cosine's edge
+// (for a single directional light band 3 is off by 37% of the mean at the terminator). Band 5 is closer.
+struct Errors {
+  double rms = 0, max = 0;
+};
+
+Errors irradiance_errors(const EnvMap& map, int bands) {
+  const ShCoefficients e = irradiance(sh_projection_cached(map)->radiance.truncated(bands));
+  const auto ns = normals(256);
+  std::vector<double> exact;
+  double mean = 0;
+  for (const Vec3 n : ns) mean += exact.emplace_back(exact_irradiance(map.image(), n)) / double(ns.size());
+  Errors out;
+  for (size_t i = 0; i < ns.size(); ++i) {
+    const double error = std::abs(e.evaluate(ns[i].x, ns[i].y, ns[i].z)[1] - exact[i]) / mean;
+    out.max = std::max(out.max, error);
+    out.rms += error * error / double(ns.size());
+  }
+  out.rms = std::sqrt(out.rms);
+  return out;
+}
+
 struct MapBound {
   const char* file;
-  double bound;
+  Errors band3;
 };
 
 class ShIrradianceOfRealMaps : public testing::TestWithParam<MapBound> {};
 
-TEST_P(ShIrradianceOfRealMaps, BandThreeIsWithinItsStatedBound) {
+TEST_P(ShIrradianceOfRealMaps, BandThreeIsWithinItsStatedBoundAndBandFiveCloser) {
   const auto map = test::real_map(GetParam().file);
-  const ShCoefficients e = irradiance(sh_projection_cached(*map)->radiance.truncated(3));
-  const auto ns = normals(64);
-  std::vector<double> exact;
-  double mean = 0;
-  for (const Vec3 n : ns) mean += exact.emplace_back(exact_irradiance(map->image(), n)) / double(ns.size());
-  double worst = 0;
-  for (size_t i = 0; i < ns.size(); ++i)
-    worst = std::max(worst, std::abs(e.evaluate(ns[i].x, ns[i].y, ns[i].z)[1] - exact[i]) / mean);
-  RecordProperty("max_relative_error", std::to_string(worst));
-  std::printf("%s: band-3 irradiance max error %.2f%% of the mean\n", GetParam().file, 100 * worst);
-  EXPECT_LT(worst, GetParam().bound);
+  const Errors three = irradiance_errors(*map, 3), five = irradiance_errors(*map, 5);
+  std::printf(
+      "%s: irradiance error of the mean, band 3: rms %.2f%% max %.2f%%; band 5: rms %.2f%% max %.2f%%\n",
+      GetParam().file, 100 * three.rms, 100 * three.max, 100 * five.rms, 100 * five.max);
+  EXPECT_LT(three.rms, GetParam().band3.rms);
+  EXPECT_LT(three.max, GetParam().band3.max);
+  EXPECT_LT(five.rms, three.rms);
 }
 
 INSTANTIATE_TEST_SUITE_P(Maps, ShIrradianceOfRealMaps,
-                         testing::Values(MapBound{"city.exr", 0.06}, MapBound{"courtyard.exr", 0.06},
-                                         MapBound{"forest.exr", 0.06}, MapBound{"studio.exr", 0.15},
-                                         MapBound{"sunrise.exr", 0.10}),
+                         testing::Values(MapBound{"city.exr", {0.05, 0.12}},
+                                         MapBound{"courtyard.exr", {0.05, 0.11}},
+                                         MapBound{"forest.exr", {0.035, 0.09}},
+                                         MapBound{"studio.exr", {0.09, 0.25}},
+                                         MapBound{"sunrise.exr", {0.11, 0.26}}),
                          [](const auto& p) { return std::string(p.param.file).substr(0, 4); });
 
 TEST(ShProjection, CachedOncePerMap) {

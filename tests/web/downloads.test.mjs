@@ -43,7 +43,7 @@ async function saveExr(bar, name) {
 }
 
 const BARS = ['map-list', 'map-image', 'samples-image', 'distribution', 'median-cut-image', 'median-cut-lights', 'fresnel',
-  'render-image', 'render-jobs'];
+  'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image'];
 
 test('the page offers every image and table for download once it shows them', async () => {
   await page.locator('#map-list tr[data-id=forest]').waitFor();
@@ -87,6 +87,16 @@ test('the median-cut picture as PNG, all its lights as JSON and CSV', async () =
     assert.equal(row['power.1'], String(lights[i].power[1]));
     assert.equal(row['region.x1'], String(lights[i].region.x1));
   });
+});
+
+test('the SH reconstruction as PNG, the coefficients as JSON and CSV, the BRDF table as EXR and PNG', async () => {
+  await savePng('sh-image', 'forest-sh3-radiance', [mapWidth, mapHeight]);
+  const sh = await getJson('/envmaps/forest/sh?bands=3&window=none');
+  const expected = sh.radiance.coefficients.map((c, i) => ({ l: c.l, m: c.m, radiance: c.rgb, irradiance: sh.irradiance.coefficients[i].rgb }));
+  const rows = await saveTable('sh-coefficients', 'forest-sh3', expected, ['l', 'm', 'radiance.0', 'irradiance.2']);
+  assert.equal(rows[0]['radiance.1'], String(sh.radiance.coefficients[0].rgb[1]));
+  await saveExr('lut-image', 'brdf-lut-128');
+  await savePng('lut-image', 'brdf-lut-128', [128, 128]);
 });
 
 test('the Fresnel table as the API gives it, JSON and CSV', async () => {
