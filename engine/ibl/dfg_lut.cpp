@@ -8,7 +8,7 @@
 #include <mutex>
 
 #include "engine/render/microfacet.hpp"
-#include "engine/render/microfacet_albedo.hpp"
+#include "engine/render/visible_normal_quadrature.hpp"
 
 namespace lp {
 namespace {
@@ -27,8 +27,10 @@ DfgValue dfg(double n_dot_v, double roughness, bool multiscatter) {
     total = 1;
     bias = schlick(mu);
   } else {
-    total = render::ggx_albedo_quadrature([](double) { return 1.0; }, mu, alpha);
-    bias = render::ggx_albedo_quadrature(schlick, mu, alpha);
+    render::visible_normal_quadrature(mu, alpha, [&](float cos_theta, double weight) {
+      total += weight;
+      bias += schlick(cos_theta) * weight;
+    });
   }
   return multiscatter ? DfgValue{bias, total} : DfgValue{total - bias, bias};
 }
