@@ -1,5 +1,6 @@
 #include "bench_data.hpp"
 
+#include "engine/image/image_io.hpp"
 #include "support/test_data.hpp"
 
 namespace lp::bench {
@@ -19,6 +20,17 @@ std::filesystem::path envmap_path(const std::string& file) {
 
 std::filesystem::path mesh_path(const std::string& file) {
   return prefer_full_size("meshes", file, test::mesh_path(file));
+}
+
+}  // namespace lp::bench
+
+namespace lp::bench {
+
+const Image& forest(int width) {
+  static const Image small = read_image_file(envmap_path("forest.exr")).image;
+  if (width == small.width()) return small;
+  static const Image large = resize_box(small, 8192, 4096);
+  return large;
 }
 
 }  // namespace lp::bench

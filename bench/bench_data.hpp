@@ -4,9 +4,15 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/image/image.hpp"
+
 namespace lp::bench {
 
 std::filesystem::path envmap_path(const std::string& file);
 std::filesystem::path mesh_path(const std::string& file);
+
+// forest.exr at its own width, or enlarged (box filter) to 8192 x 4096 for any other `width`; each
+// read or built once.
+const Image& forest(int width);
 
 }  // namespace lp::bench

@@ -13,12 +13,7 @@
 namespace lp {
 namespace {
 
-const Image& forest(int width) {
-  static const Image small = read_image_file(bench::envmap_path("forest.exr")).image;
-  if (width == small.width()) return small;
-  static const Image large = resize_box(small, 8192, 4096);
-  return large;
-}
+using bench::forest;
 
 MedianCutParams params(int count, SplitRule split = SplitRule::Median) {
   MedianCutParams p;

@@ -12,12 +12,7 @@
 namespace lp {
 namespace {
 
-const Image& forest(int width) {
-  static const Image small = read_image_file(bench::envmap_path("forest.exr")).image;
-  if (width == small.width()) return small;
-  static const Image large = resize_box(small, 8192, 4096);
-  return large;
-}
+using bench::forest;
 
 void BM_ShProjection(benchmark::State& state) {
   const Image& image = forest(int(state.range(0)));
