@@ -8,26 +8,10 @@
 #include "engine/core/constants.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
+#include "engine/sh/row_harmonics.hpp"
 
 namespace lp {
 namespace {
-
-// cos(m phi_x) and sin(m phi_x) for every column and m = 0 .. bands - 1.
-struct ColumnTrig {
-  int bands;
-  std::vector<double> cos_sin;  // [x][m][cos, sin]
-
-  ColumnTrig(int width, int bands_) : bands(bands_), cos_sin(size_t(width) * bands_ * 2) {
-    for (int x = 0; x < width; ++x) {
-      const double phi = 2 * kPi * (x + 0.5) / width;
-      for (int m = 0; m < bands; ++m) {
-        cos_sin[(size_t(x) * bands + m) * 2] = std::cos(m * phi);
-        cos_sin[(size_t(x) * bands + m) * 2 + 1] = std::sin(m * phi);
-      }
-    }
-  }
-  const double* at(int x) const { return &cos_sin[size_t(x) * bands * 2]; }
-};
 
 // The theta part of Y_lm integrated over row y: the integral from theta_0 to theta_1 of
 // K_lm P_l^m(cos theta) sin theta, by 8-point Gauss-Legendre (exact to rounding for these smooth
@@ -63,17 +47,8 @@ double column_phi_factor(int m, double dphi) {
 // integrals of each Y_lm's theta and phi parts over a pixel of the row, so that every pixel counts as a
 // patch of constant radiance, integrated exactly. Rows are summed in order afterwards, so the result
 // does not depend on the thread count.
-std::vector<ShRgb> project_row(const Image& image, int y, int bands, const ColumnTrig& trig) {
-  std::array<std::array<double, 3>, kMaxShBands> cos_sum{}, sin_sum{};
-  const float* row = image.row(y);
-  for (int x = 0; x < image.width(); ++x) {
-    const double* cs = trig.at(x);
-    for (int m = 0; m < bands; ++m)
-      for (int c = 0; c < 3; ++c) {
-        cos_sum[m][c] += double(row[3 * x + c]) * cs[2 * m];
-        sin_sum[m][c] += double(row[3 * x + c]) * cs[2 * m + 1];
-      }
-  }
+std::vector<ShRgb> project_row(const Image& image, int y, int bands, const RowHarmonics& harmonics) {
+  const auto sums = harmonics.sums(image.row(y));
   const double dphi = 2 * kPi / image.width();
   const ShBasis theta = row_theta_integrals(y, image.height(), bands);
   std::vector<ShRgb> out(size_t(sh_coefficient_count(bands)));
@@ -82,8 +57,8 @@ std::vector<ShRgb> project_row(const Image& image, int y, int bands, const Colum
       const double k =
           (m == 0 ? 1 : std::sqrt(2.0)) * theta[size_t(sh_index(l, m))] * column_phi_factor(m, dphi);
       for (int c = 0; c < 3; ++c) {
-        out[size_t(sh_index(l, m))][c] = k * cos_sum[m][c];
-        if (m > 0) out[size_t(sh_index(l, -m))][c] = k * sin_sum[m][c];
+        out[size_t(sh_index(l, m))][c] = k * sums[size_t(RowHarmonics::cos_index(m))][c];
+        if (m > 0) out[size_t(sh_index(l, -m))][c] = k * sums[size_t(RowHarmonics::sin_index(m))][c];
       }
     }
   return out;
@@ -106,10 +81,10 @@ ShRgb ShCoefficients::evaluate(double x, double y, double z) const {
 }
 
 ShCoefficients project_sh(const Image& latlong, int bands) {
-  const ColumnTrig trig(latlong.width(), bands);
+  const RowHarmonics harmonics(latlong.width(), bands);
   std::vector<std::vector<ShRgb>> rows(size_t(latlong.height()));
   tbb::parallel_for(0, latlong.height(),
-                    [&](int y) { rows[size_t(y)] = project_row(latlong, y, bands, trig); });
+                    [&](int y) { rows[size_t(y)] = project_row(latlong, y, bands, harmonics); });
   ShCoefficients out{bands, std::vector<ShRgb>(size_t(sh_coefficient_count(bands)))};
   for (const auto& row : rows)
     for (size_t i = 0; i < row.size(); ++i)

@@ -1,8 +1,9 @@
 #pragma once
 // Projection of a lat-long map onto the real SH basis (sh_basis.hpp), exact over the pixels: each pixel
 // is a patch of constant radiance, and each Y_lm is integrated over the patch (its phi part in closed
-// form, its theta part by Gauss-Legendre to rounding), so a constant map has no coefficient beyond L00. The per-map result holds
-// all kMaxShBands bands; fewer bands are its prefix (a coefficient does not depend on how many follow).
+// form, its theta part by Gauss-Legendre to rounding), so a constant map has no coefficient beyond L00. The
+// per-map result holds all kMaxShBands bands; fewer bands are its prefix (a coefficient does not depend on
+// how many follow).
 #include <array>
 #include <cstdint>
 #include <memory>
