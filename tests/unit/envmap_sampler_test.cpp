@@ -13,17 +13,13 @@
 #include "engine/core/rng.hpp"
 #include "engine/envmap/sample_set.hpp"
 #include "support/chi_square.hpp"
+#include "support/constant_map.hpp"
 #include "support/real_maps.hpp"
 
 namespace lp {
 namespace {
 
-EnvMap constant_map(int w, int h, Rgb value) {
-  Image img(w, h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) img.set(x, y, value);
-  return EnvMap(std::move(img));
-}
+using test::constant_map;
 
 EnvMap one_bright_pixel(int w, int h, int px, int py, Rgb value) {
   Image img(w, h);
