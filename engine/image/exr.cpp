@@ -56,12 +56,14 @@ class MemoryOStream : public Imf::OStream {
 
 void enable_exr_threads() {
   static std::once_flag once;
-  std::call_once(once, [] { Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency()))); });
+  std::call_once(once,
+                 [] { Imf::setGlobalThreadCount(int(std::max(1u, std::thread::hardware_concurrency()))); });
 }
 
 // The channel names to read into R, G, B: "R","G","B", or "Y" for all three.
 std::array<const char*, 3> pick_channels(const Imf::ChannelList& channels) {
-  if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) return {"R", "G", "B"};
+  if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B"))
+    return {"R", "G", "B"};
   if (channels.findChannel("Y")) return {"Y", "Y", "Y"};
   throw Error(ErrorKind::Unsupported, "OpenEXR file has neither R, G, B nor Y channels");
 }
@@ -77,7 +79,8 @@ Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
     const Imath::Box2i window = file.header().dataWindow();
     if (window.min.x != checked.min_x || window.min.y != checked.min_y || window.max.x != checked.max_x ||
         window.max.y != checked.max_y || int(file.header().compression()) != checked.compression)
-      throw Error(ErrorKind::Corrupt, "cannot read OpenEXR data: the header reads differently on a second pass");
+      throw Error(ErrorKind::Corrupt,
+                  "cannot read OpenEXR data: the header reads differently on a second pass");
     const int64_t width = int64_t{window.max.x} - window.min.x + 1;
     const int64_t height = int64_t{window.max.y} - window.min.y + 1;
     check_image_size(width, height, limits);
@@ -105,11 +108,13 @@ Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   }
 }
 
-std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression) {
+std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression, PixelPrecision precision) {
   enable_exr_threads();
   Imf::Header header(image.width(), image.height());
   header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
-  for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  // The library converts the float pixels to the file's channel type as it writes them.
+  const Imf::PixelType type = precision == PixelPrecision::Half ? Imf::HALF : Imf::FLOAT;
+  for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(type));
   MemoryOStream stream;
   {
     Imf::OutputFile file(stream, header);

@@ -58,8 +58,14 @@ struct ToneMap {
 };
 
 enum class ExrCompression { Zip, None };  // None: several times faster to write, for noisy images
-std::vector<uint8_t> write_exr(const Image& image,
-                               ExrCompression compression = ExrCompression::Zip);  // float RGB
+// The bits of each channel in a file: 32-bit float, or 16-bit half float (IEEE 754 binary16).
+enum class PixelPrecision { Float, Half };
+constexpr auto enum_entries(PixelPrecision) {
+  return std::to_array<EnumEntry<PixelPrecision>>(
+      {{PixelPrecision::Float, "float"}, {PixelPrecision::Half, "half"}});
+}
+std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression = ExrCompression::Zip,
+                               PixelPrecision precision = PixelPrecision::Float);  // RGB
 std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
 std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
 std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB

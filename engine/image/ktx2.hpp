@@ -1,0 +1,37 @@
+#pragma once
+// KTX 2.0 (Khronos Texture) files of one 2D texture with its mip levels, uncompressed RGBA floats:
+// VK_FORMAT_R16G16B16A16_SFLOAT (half) or VK_FORMAT_R32G32B32A32_SFLOAT (float), alpha 1, linear,
+// BT.709 primaries, no supercompression, orientation "rd" (row 0 at the top), and key/value metadata.
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/image/image.hpp"
+#include "engine/image/image_io.hpp"
+
+namespace lp {
+
+struct Ktx2Texture {
+  uint32_t vk_format = 0;
+  uint32_t type_size = 0;  // bytes of one component
+  PixelPrecision precision = PixelPrecision::Half;
+  std::vector<Image> levels;  // RGB (alpha dropped), level 0 first
+  // The key/value data; a value that ends in NUL (a string) without it.
+  std::map<std::string, std::string> metadata;
+};
+
+// `levels` are a mip chain: level p is max(1, w0 >> p) x max(1, h0 >> p), at most
+// floor(log2(max(w0, h0))) + 1 of them. `metadata` is written after KTXorientation and KTXwriter, each
+// value as a NUL-terminated string; its keys must not begin with "KTX" or "ktx" (reserved). Throws
+// lp::Error(InvalidArgument) otherwise.
+std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision precision,
+                                const std::map<std::string, std::string>& metadata = {});
+
+// Reads what write_ktx2 writes (the two formats, 2D, no supercompression, the same Data Format
+// Descriptor) and refuses the rest. Throws lp::Error: Unsupported (not KTX 2.0, or another kind of
+// texture), Corrupt (sizes and offsets that disagree or leave the file), TooLarge (over `limits`).
+Ktx2Texture read_ktx2(std::span<const uint8_t> bytes, const ImageLimits& limits);
+
+}  // namespace lp
