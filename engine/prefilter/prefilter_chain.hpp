@@ -1,0 +1,34 @@
+#pragma once
+// A prefiltered specular mip chain of a map, in lat-long: level 0 is the map resampled to
+// base_size x base_size / 2 (resample_latlong: filtered, its power kept), and level i > 0, half the
+// size of level i - 1, holds at each texel the GGX convolution of roughness i / (levels - 1) in the
+// texel's direction (lobe_convolution.hpp), read from the map by filtered importance sampling.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "engine/envmap/envmap.hpp"
+#include "engine/image/image.hpp"
+#include "engine/prefilter/prefilter_control.hpp"
+#include "engine/prefilter/prefilter_params.hpp"
+
+namespace lp {
+
+struct PrefilteredChain {
+  PrefilterParams params;
+  int source_width = 0;       // the width of the map the lobes read (prefilter_source.hpp); 0 for one level
+  std::vector<Image> levels;  // level 0 first
+};
+
+// The work units a chain reports through PrefilterControl: texel samples, a texel of level 0 counting one.
+int64_t prefilter_work_units(const PrefilterParams& params);
+// The bytes making a chain of a map_width x map_height map takes at most, the chain included.
+int64_t prefilter_working_bytes(int map_width, int map_height, const PrefilterParams& params);
+// The bytes of the chain itself.
+int64_t prefiltered_chain_bytes(const PrefilterParams& params);
+
+// Throws lp::Error(InvalidArgument) for parameters out of range; nullopt if the control stopped it.
+std::optional<PrefilteredChain> prefilter_latlong(const EnvMap& map, const PrefilterParams& params,
+                                                  const PrefilterControl& control = {});
+
+}  // namespace lp
