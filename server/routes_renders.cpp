@@ -11,6 +11,7 @@
 #include "api/render_request.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "server/job_routes.hpp"
 #include "server/render_job.hpp"
 #include "server/render_memory.hpp"
 #include "server/render_requests.hpp"
@@ -29,16 +30,8 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-void send_queue_full(const App& app, httplib::Response& res) {
-  res.set_header("Retry-After", std::to_string(app.renders.retry_after_s()));
-  send_error(res, api::ErrorCode::QueueFull,
-             fmt::format("{} renders are running and {} queued (the limit); retry later",
-                         app.renders.running_count(), app.renders.queued_count()));
-}
-
-void send_accepted(const RenderJob& job, const nlohmann::json& body, httplib::Response& res) {
-  res.set_header("Location", "/api/v1/renders/" + job.id());
-  send_json(res, body, 202);
+std::string render_url(const RenderJob& job) {
+  return "/api/v1/renders/" + job.id();
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
@@ -59,16 +52,16 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   job->save_record();
   if (!app.renders.submit(job)) {
     job->delete_state();
-    send_queue_full(app, res);
+    send_queue_full(app.renders, "renders", res);
     return;
   }
-  send_accepted(*job, body, res);
+  send_accepted(render_url(*job), body, res);
 }
 
 void resume(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = resume_render(app, find_render(app, path_param(req, 1)));
-  if (!job) return send_queue_full(app, res);
-  send_accepted(*job, job->status_json(), res);
+  if (!job) return send_queue_full(app.renders, "renders", res);
+  send_accepted(render_url(*job), job->status_json(), res);
 }
 
 void list(const App& app, httplib::Response& res) {
@@ -99,16 +92,7 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
 }
 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
-  const auto job = find_render(app, path_param(req, 1));
-  switch (app.renders.cancel_or_remove(job->id())) {
-    case JobManager::CancelOutcome::NotFound:
-      throw api::not_found("no render job '" + job->id() + "'");
-    case JobManager::CancelOutcome::Removed:
-      res.status = 204;
-      return;
-    default:
-      send_json(res, job->status_json(), 202);
-  }
+  cancel_or_remove(app.renders, *find_render(app, path_param(req, 1)), "render job", res);
 }
 
 // One slot of the bounded number of event streams; released when the response (and its provider) goes.

@@ -1,7 +1,7 @@
 #pragma once
-// Waiting for a render job to leave the queue: polls GET /api/v1/renders/{id} until its status is no
-// longer queued or running. The deadline only keeps a broken server from hanging the suite; nothing is
-// timed. Returns the final status (empty, with a test failure, past the deadline).
+// Waiting for a job (a render, a prefilter) to leave the queue: polls its status until it is no longer
+// queued or running. The deadline only keeps a broken server from hanging the suite; nothing is timed.
+// Returns the final status (empty, with a test failure, past the deadline).
 #include <gtest/gtest.h>
 #include <httplib.h>
 
@@ -14,15 +14,20 @@
 
 namespace lp::test {
 
-inline nlohmann::json finished_render(httplib::Client& client, const std::string& id) {
+// `url` is the job's status, e.g. "/api/v1/prefilters/3f9c0a7d12e4b856".
+inline nlohmann::json finished_job(httplib::Client& client, const std::string& url) {
   using namespace std::chrono_literals;
   for (auto deadline = std::chrono::steady_clock::now() + 120s; std::chrono::steady_clock::now() < deadline;
        std::this_thread::sleep_for(20ms)) {
-    const nlohmann::json st = reply(client.Get(("/api/v1/renders/" + id).c_str())).body_json();
+    const nlohmann::json st = reply(client.Get(url.c_str())).body_json();
     if (st["status"] != "queued" && st["status"] != "running") return st;
   }
-  ADD_FAILURE() << "render " << id << " did not finish";
+  ADD_FAILURE() << url << " did not finish";
   return {};
+}
+
+inline nlohmann::json finished_render(httplib::Client& client, const std::string& id) {
+  return finished_job(client, "/api/v1/renders/" + id);
 }
 
 }  // namespace lp::test
