@@ -4,6 +4,7 @@
 
 #include "api/brdf_lut_request.hpp"
 #include "api/fresnel_request.hpp"
+#include "api/prefilter_request.hpp"
 #include "api/sample_request.hpp"
 #include "api/sh_request.hpp"
 #include "engine/envmap/invalid_pixels.hpp"
@@ -164,6 +165,18 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(light("intensity"), kIntensity, lighting.intensity));
 }
 
+void add_prefilter_parameters(std::vector<Doc>& d) {
+  const std::string path = "/api/v1/envmaps/{id}/prefilter";
+  const PrefilterRequest r;
+  d.push_back(range_doc(body(path, "levels"), limits::kPrefilterLevels, r.params.levels));
+  d.push_back(range_doc(body(path, "base_size"), limits::kPrefilterBaseSize, r.params.base_size));
+  d.push_back(range_doc(body(path, "samples"), limits::kPrefilterSamples, r.params.samples));
+  d.push_back(enum_doc(body(path, "format"), std::optional(r.format)));
+  d.push_back(enum_doc(body(path, "precision"), std::optional(r.precision)));
+  d.push_back(enum_doc(schema("PrefilterJob", {"properties", "format"}), std::optional<PrefilterFormat>()));
+  d.push_back(enum_doc(schema("PrefilterJob", {"properties", "precision"}), std::optional<PixelPrecision>()));
+}
+
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
@@ -206,6 +219,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_enum_parameters(d);
   add_request_ranges(d);
   add_render_ranges(d);
+  add_prefilter_parameters(d);
   return d;
 }
 

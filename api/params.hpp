@@ -34,6 +34,8 @@ inline constexpr int kMaxJsonDepth = 64;
 Json parse_json(std::string_view text, std::string_view what = "the request body");
 // As parse_json, and 400 "invalid_json" unless the value is an object.
 Json parse_json_object(std::string_view body);
+// The same, but an empty body (or only white space) is the empty object: every field its default.
+Json parse_json_object_or_empty(std::string_view body);
 // Fails with 400 naming the first key of `body` not in `known` (catches typos like "cout").
 void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,
                            const std::string& prefix = "");

@@ -21,6 +21,11 @@ inline JobManagerConfig render_job_config(const Options& o) {
           o.max_finished_mb << 20, o.threads,         o.render_priority};
 }
 
+// Prefilters run one at a time (each takes every core its arena has), queued and kept as renders are.
+inline JobManagerConfig prefilter_job_config(const Options& o) {
+  return {1, o.max_queued_jobs, o.max_finished_jobs, o.max_finished_mb << 20, o.threads, o.render_priority};
+}
+
 // Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
 inline int64_t decoding_budget_bytes(const Options& o) {
   return std::min(o.max_memory_mb << 20, 2 * EnvMap::image_bytes(o.limits.max_pixels, 1));
@@ -38,6 +43,7 @@ struct App {
   std::atomic<bool> ready{false};     // the maps to load at start and the state directory are loaded
   HttpMetrics http_metrics;           // requests answered (GET /metrics)
   RenderCounters render_counters;     // what renders traced (GET /metrics)
+  JobManager prefilters;              // prefiltered specular chains (routes_prefilter.cpp)
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)
@@ -47,6 +53,7 @@ struct App {
         envmaps(options.max_envmaps),
         assets(options.max_assets),
         models(memory),
+        prefilters(prefilter_job_config(options)),
         renders(render_job_config(options)) {}
 };
 

@@ -10,6 +10,7 @@ void shut_down(App& app, Server& server) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   server.stop_accepting();
+  app.prefilters.shutdown(std::chrono::seconds(app.options.shutdown_grace_s));  // they stop at their next row
   app.renders.shutdown(std::chrono::seconds(app.options.shutdown_grace_s));
   const auto streams_deadline = Clock::now() + kStreamDrain;
   while (app.event_streams.load() > 0 && Clock::now() < streams_deadline)

@@ -90,6 +90,10 @@ TEST(Caching, EveryPureResultRoute) {
   ASSERT_EQ(submitted.status, 202);
   const std::string id = submitted.body_json()["id"];
   ASSERT_EQ(test::finished_render(*c, id)["status"], "done");
+  const Reply prefilter =
+      test::reply(c->Post("/api/v1/envmaps/default/prefilter", R"({"levels":2,"base_size":16,"samples":16})",
+                          "application/json"));
+  ASSERT_EQ(test::finished_job(*c, prefilter.header("Location"))["status"], "done");
   const std::vector<std::pair<std::string, std::string>> routes = {
       {"/api/v1/envmaps/default/image", "no-cache"},
       {"/api/v1/envmaps/default/distribution", "no-cache"},
@@ -97,6 +101,7 @@ TEST(Caching, EveryPureResultRoute) {
       {"/api/v1/envmaps/default/median-cut.png?count=4", "no-cache"},
       {"/api/v1/envmaps/default/sh.png?width=64", "no-cache"},
       {"/api/v1/renders/" + id + "/image", "no-cache"},
+      {prefilter.header("Location") + "/files/prefiltered.ktx2", "no-cache"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5", "max-age=3600"},
       {"/api/v1/brdf-lut?size=8", "max-age=3600"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5&format=csv", "max-age=3600"},

@@ -1,0 +1,27 @@
+#pragma once
+// The files a finished prefiltered chain is delivered as, and the conventions written into them.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "api/prefilter_request.hpp"
+#include "engine/prefilter/prefilter_chain.hpp"
+
+namespace lp::api {
+
+// "level0.exr", "level1.exr", ... (format exr) or "prefiltered.ktx2" (format ktx2).
+std::vector<std::string> prefilter_file_names(const PrefilterRequest& request);
+const char* prefilter_file_mime_type(PrefilterFormat format);
+
+// How to read a chain: (name, text) pairs, in the status JSON's "convention" and, as "lightprobe.NAME",
+// in a KTX2 file's metadata.
+std::vector<std::pair<std::string, std::string>> prefilter_conventions();
+
+// The bytes encoding the file `name` takes at most (its encoder's buffers included); 404 for a name
+// that is not one of the chain's files.
+int64_t prefilter_file_bytes(const PrefilterRequest& request, const std::string& name);
+std::vector<uint8_t> encode_prefilter_file(const PrefilteredChain& chain, const PrefilterRequest& request,
+                                           const std::string& name);
+
+}  // namespace lp::api

@@ -1,0 +1,77 @@
+// Prefiltered specular chains as jobs: POST /envmaps/{id}/prefilter queues one; status, cancel / remove,
+// the list, and the files of a finished chain. They run on a job manager of their own (App::prefilters),
+// the same machinery as renders with its own queue.
+#include <fmt/format.h>
+
+#include "api/api_error.hpp"
+#include "api/prefilter_files.hpp"
+#include "api/prefilter_request.hpp"
+#include "server/job_routes.hpp"
+#include "server/prefilter_job.hpp"
+#include "server/reserved_content.hpp"
+#include "server/routes.hpp"
+
+namespace lp::server {
+namespace {
+
+std::string prefilter_url(const std::string& id) {
+  return "/api/v1/prefilters/" + id;
+}
+
+std::shared_ptr<PrefilterJob> find_prefilter(const App& app, const std::string& id) {
+  auto job = std::dynamic_pointer_cast<PrefilterJob>(app.prefilters.find(id));
+  if (!job) throw api::not_found("no prefilter job '" + api::excerpt(id) + "'");
+  return job;
+}
+
+void submit(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto entry = app.envmaps.get(path_param(req, 1));
+  auto request = api::parse_prefilter_request(req.body);
+  const auto& p = request.params;
+  auto memory = app.memory.reserve(
+      prefilter_working_bytes(entry->map->width(), entry->map->height(), p), MemoryUse::Transient,
+      fmt::format("a prefiltered chain of {} levels from {} texels wide", p.levels, p.base_size));
+  auto job = std::make_shared<PrefilterJob>(app.prefilters.new_id(), entry->name, entry->map,
+                                            std::move(request), std::move(memory));
+  const auto status = job->status_json();  // taken before a runner can pick it up: "queued"
+  if (!app.prefilters.submit(job)) return send_queue_full(app.prefilters, "prefilters", res);
+  send_accepted(prefilter_url(job->id()), status, res);
+}
+
+void list(const App& app, httplib::Response& res) {
+  nlohmann::json jobs = nlohmann::json::array();
+  for (const auto& job : app.prefilters.list()) jobs.push_back(job->status_json());
+  send_json(res, {{"prefilters", jobs},
+                  {"running", app.prefilters.running_count()},
+                  {"queued", app.prefilters.queued_count()}});
+}
+
+void file(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = find_prefilter(app, path_param(req, 1));
+  const std::string name = path_param(req, 2);
+  const int64_t bytes = api::prefilter_file_bytes(job->request(), name);  // 404 for an unknown name
+  const auto chain = job->chain();
+  if (!chain)
+    throw api::ApiError(api::ErrorCode::NoImageYet, fmt::format("prefilter '{}' is {} and has no chain yet",
+                                                                job->id(), enum_name(job->status())));
+  auto memory = app.memory.reserve(bytes, MemoryUse::Transient, "encoding " + name);
+  send_reserved(res, api::encode_prefilter_file(*chain, job->request(), name),
+                api::prefilter_file_mime_type(job->request().format), std::move(memory));
+}
+
+}  // namespace
+
+void register_prefilter_routes(Router& router, App& app) {
+  router.post("/api/v1/envmaps/{id}/prefilter", endpoint_of(app, submit));
+  router.get("/api/v1/prefilters",
+             [&app](const httplib::Request&, httplib::Response& res) { list(app, res); });
+  router.get("/api/v1/prefilters/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
+    send_json(res, find_prefilter(app, path_param(req, 1))->status_json());
+  });
+  router.get("/api/v1/prefilters/{id}/files/{name}", endpoint_of(app, file), Caching::Revalidate);
+  router.del("/api/v1/prefilters/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
+    cancel_or_remove(app.prefilters, *find_prefilter(app, path_param(req, 1)), "prefilter job", res);
+  });
+}
+
+}  // namespace lp::server

@@ -1,0 +1,186 @@
+// Prefiltered specular chains on the real server: a job from POST to done with its progress, the files
+// read back (KTX2 and EXR) against analytic values, a long job cancelled while it runs, a file asked of
+// a job still queued, and bad input.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "engine/envmap/envmap.hpp"
+#include "engine/image/image_io.hpp"
+#include "engine/image/ktx2.hpp"
+#include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
+#include "support/server_process.hpp"
+#include "support/white_map.hpp"
+
+namespace lp {
+namespace {
+
+using nlohmann::json;
+using test::Reply;
+
+httplib::Client& client() {
+  static auto c = test::shared_server().client();
+  return *c;
+}
+
+Reply get(const std::string& path) {
+  return test::reply(client().Get(path.c_str()));
+}
+
+Reply submit(const std::string& map, const std::string& body) {
+  return test::reply(
+      client().Post(("/api/v1/envmaps/" + map + "/prefilter").c_str(), body, "application/json"));
+}
+
+Reply del(const std::string& path) {
+  return test::reply(client().Delete(path.c_str()));
+}
+
+const std::string& white() {
+  static const std::string name = [] {
+    const Reply r = test::upload_white_map(client(), "prefilter_white");
+    EXPECT_TRUE(r.status == 201 || r.status == 409) << r.body;
+    return std::string("prefilter_white");
+  }();
+  return name;
+}
+
+// Submits and waits for the end; the final status.
+json finished(const std::string& map, const std::string& body) {
+  const Reply r = submit(map, body);
+  EXPECT_EQ(r.status, 202) << r.body;
+  const json queued = r.body_json();
+  EXPECT_EQ(r.header("Location"), "/api/v1/prefilters/" + queued["id"].get<std::string>());
+  return test::finished_job(client(), r.header("Location"));
+}
+
+std::vector<uint8_t> bytes_of(const Reply& r) {
+  return {r.body.begin(), r.body.end()};
+}
+
+void expect_all_near(const Image& image, float value, float tolerance) {
+  for (const float v : image.data()) ASSERT_NEAR(v, value, tolerance);
+}
+
+TEST(PrefilterApi, AWhiteMapIsOneAtEveryLevelOfTheKtx2File) {
+  const json st = finished(white(), R"({"levels":5,"base_size":64,"samples":256})");
+  ASSERT_EQ(st["status"], "done") << st;
+  EXPECT_EQ(st["progress"], 1.0);
+  EXPECT_EQ(st["files_available"], true);
+  EXPECT_EQ(st["format"], "ktx2");
+  EXPECT_EQ(st["precision"], "half");
+  ASSERT_EQ(st["files"].size(), 1u);
+  const Reply file = get(st["files"][0]["url"]);
+  ASSERT_EQ(file.status, 200) << file.body;
+  EXPECT_EQ(file.type(), "image/ktx2");
+  const Ktx2Texture t = read_ktx2(bytes_of(file), {});
+  EXPECT_EQ(t.vk_format, 97u);
+  ASSERT_EQ(t.levels.size(), 5u);
+  for (size_t i = 0; i < t.levels.size(); ++i) {
+    EXPECT_EQ(t.levels[i].width(), 64 >> i);
+    EXPECT_EQ(t.levels[i].height(), 32 >> i);
+    expect_all_near(t.levels[i], 1.0f, 1e-3f);
+  }
+  EXPECT_EQ(t.metadata.at("KTXorientation"), "rd");
+  EXPECT_EQ(t.metadata.at("lightprobe.roughness"), st["convention"]["roughness"]);
+}
+
+TEST(PrefilterApi, ExrLevelsOfARealMapKeepItsPowerAtLevelZero) {
+  const json st = finished("forest_exr", R"({"levels":4,"base_size":128,"samples":64,"format":"exr",
+                                              "precision":"float"})");
+  ASSERT_EQ(st["status"], "done") << st;
+  ASSERT_EQ(st["files"].size(), 4u);
+  EXPECT_EQ(st["files"][3]["name"], "level3.exr");
+  EXPECT_EQ(st["level_info"][3]["roughness"], 1.0);
+  const Reply level0 = get(st["files"][0]["url"]);
+  ASSERT_EQ(level0.status, 200);
+  EXPECT_EQ(level0.type(), "image/x-exr");
+  const Image image = read_exr(bytes_of(level0), {});
+  ASSERT_EQ(image.width(), 128);
+  ASSERT_EQ(image.height(), 64);
+  const json power = get("/api/v1/envmaps/forest_exr").body_json()["power"];
+  const Rgb level_power = EnvMap::power_of(image);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(level_power[c] / power[c].get<double>(), 1.0, 1e-5);
+  const Image level3 = read_exr(bytes_of(get(st["files"][3]["url"])), {});
+  EXPECT_EQ(level3.width(), 16);
+  EXPECT_EQ(get(st["files"][0]["url"].get<std::string>()).header("ETag"), level0.header("ETag"));
+}
+
+TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
+  const Reply long_job = submit("forest_exr", R"({"levels":11,"base_size":2048,"samples":16384})");
+  ASSERT_EQ(long_job.status, 202) << long_job.body;
+  const std::string url = long_job.header("Location");
+  // A second job waits behind it: its files are not there yet.
+  const Reply queued = submit(white(), "");
+  ASSERT_EQ(queued.status, 202) << queued.body;
+  const std::string queued_url = queued.header("Location");
+  const Reply early = get(queued_url + "/files/prefiltered.ktx2");
+  EXPECT_EQ(early.status, 409);
+  EXPECT_EQ(early.body_json()["error"]["code"], "no_image_yet");
+
+  json st;
+  for (int i = 0; i < 6000; ++i) {  // until a row of level 1 has reported
+    st = get(url).body_json();
+    if (st["progress"].get<double>() > 0.001) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_EQ(st["status"], "running") << st;
+  EXPECT_LT(st["progress"].get<double>(), 0.5);
+  const Reply cancel = del(url);
+  EXPECT_EQ(cancel.status, 202);
+  EXPECT_EQ(cancel.body_json()["cancel_requested"], true);
+  EXPECT_EQ(test::finished_job(client(), url)["status"], "cancelled");
+  EXPECT_EQ(get(url + "/files/prefiltered.ktx2").status, 409);
+  EXPECT_EQ(del(url).status, 204);
+  EXPECT_EQ(get(url).status, 404);
+
+  EXPECT_EQ(test::finished_job(client(), queued_url)["status"], "done");
+  EXPECT_EQ(get(queued_url + "/files/prefiltered.ktx2").status, 200);
+  const json list = get("/api/v1/prefilters").body_json();
+  bool listed = false;
+  for (const json& job : list["prefilters"])
+    listed = listed || queued_url.ends_with(job["id"].get<std::string>());
+  EXPECT_TRUE(listed);
+}
+
+TEST(PrefilterApi, BadInputIsA400NamingTheField) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"levels":0})", "'levels'"},
+      {R"({"levels":9,"base_size":256})", "'levels'"},
+      {R"({"base_size":100000})", "'base_size'"},
+      {R"({"samples":"many"})", "'samples'"},
+      {R"({"format":"png"})", "'format'"},
+      {R"({"precision":"double"})", "'precision'"},
+      {R"({"roughness":1})", "'roughness'"},
+  };
+  for (const auto& [body, field] : cases) {
+    const Reply r = submit(white(), body);
+    EXPECT_EQ(r.status, 400) << body;
+    EXPECT_EQ(r.body_json()["error"]["code"], "invalid_field") << body;
+    EXPECT_NE(r.body_json()["error"]["message"].get<std::string>().find(field), std::string::npos) << r.body;
+  }
+  const Reply not_json = submit(white(), "{levels: 3");
+  EXPECT_EQ(not_json.status, 400);
+  EXPECT_EQ(not_json.body_json()["error"]["code"], "invalid_json");
+}
+
+TEST(PrefilterApi, UnknownMapsJobsAndFilesAre404) {
+  const Reply no_map = submit("no_such_map", "");
+  EXPECT_EQ(no_map.status, 404);
+  EXPECT_EQ(no_map.body_json()["error"]["code"], "not_found");
+  EXPECT_EQ(get("/api/v1/prefilters/0123456789abcdef").status, 404);
+  EXPECT_EQ(del("/api/v1/prefilters/0123456789abcdef").status, 404);
+  const json st = finished(white(), R"({"levels":2,"base_size":16,"samples":16})");
+  ASSERT_EQ(st["status"], "done");
+  const Reply no_file = get("/api/v1/prefilters/" + st["id"].get<std::string>() + "/files/level0.exr");
+  EXPECT_EQ(no_file.status, 404);
+  EXPECT_NE(no_file.body_json()["error"]["message"].get<std::string>().find("prefiltered.ktx2"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace lp
