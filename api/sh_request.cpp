@@ -33,8 +33,4 @@ ShCoefficients sh_radiance(const ShCoefficients& full, const ShRequest& request)
   return scaled_by_band(full.truncated(request.bands), sh_window_factors(request.window, request.bands));
 }
 
-ShCoefficients sh_irradiance(const ShCoefficients& radiance) {
-  return scaled_by_band(radiance, sh_cosine_lobe_factors(radiance.bands));
-}
-
 }  // namespace lp::api

@@ -38,9 +38,7 @@ struct ShImageRequest {
 // bands, window (as above), quantity=radiance|lambertian, width, exposure, gamma.
 ShImageRequest parse_sh_image_query(const Query& q);
 
-// The coefficients `request` asks for, from the map's full projection: truncated, windowed, and for
-// `lambertian` convolved with the clamped cosine and divided by pi.
+// The radiance coefficients `request` asks for, from the map's full projection: truncated and windowed.
 ShCoefficients sh_radiance(const ShCoefficients& full, const ShRequest& request);
-ShCoefficients sh_irradiance(const ShCoefficients& radiance);
 
 }  // namespace lp::api

@@ -2,8 +2,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/core/constants.hpp"
-
 namespace lp::api {
 namespace {
 
@@ -48,7 +46,7 @@ std::string sh_json(const ShCoefficients& full, const ShRequest& request, double
                  {"radiance", {{"quantity", "radiance L"}, {"coefficients", coefficients(radiance)}}}};
   if (request.irradiance) {
     const ShCoefficients e = sh_irradiance(radiance);
-    const ShCoefficients lambertian = scaled_by_band(e, std::vector<double>(size_t(e.bands), 1 / kPi));
+    const ShCoefficients lambertian = sh_lambertian(radiance);
     const std::string convolution = "clamped cosine (Ramamoorthi and Hanrahan 2001): E_lm = A_l L_lm";
     out["irradiance"] = {{"quantity", "irradiance E"},
                          {"includes_1_over_pi", false},

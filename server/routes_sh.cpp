@@ -4,7 +4,6 @@
 
 #include "api/sh_request.hpp"
 #include "api/sh_schema.hpp"
-#include "engine/core/constants.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/sh/sh_image.hpp"
 #include "server/reserved_content.hpp"
@@ -29,8 +28,7 @@ void sh_png(App& app, const httplib::Request& req, httplib::Response& res) {
   const int h = std::max(1, w / 2);
   const auto projection = sh_projection_cached(*entry->map);
   ShCoefficients c = api::sh_radiance(projection->radiance, r.sh);
-  if (r.quantity == api::ShQuantity::Lambertian)
-    c = scaled_by_band(api::sh_irradiance(c), std::vector<double>(size_t(c.bands), 1 / kPi));
+  if (r.quantity == api::ShQuantity::Lambertian) c = sh_lambertian(c);
   const int64_t drawing = int64_t(w) * h * (3 * int64_t(sizeof(float)) + 3);  // float image, then RGB8
   send_png_picture(res, app.memory, w, h, drawing, "an SH reconstruction picture",
                    [&] { return tone_map_rgb8(sh_reconstruction_image(c, w, h), r.tone); });

@@ -8,11 +8,8 @@
 //                      1 + F0 (1 / y - 1) compensates the energy multiple scattering keeps
 // with Fc = (1 - v.h)^5 and G2 / G1 the weight of a visible normal (Heitz 2018), integrated by the
 // quadrature of the renderer's own albedo tables (render/visible_normal_quadrature.hpp).
-#include <array>
 #include <memory>
 #include <vector>
-
-#include "engine/core/limits.hpp"
 
 namespace lp {
 

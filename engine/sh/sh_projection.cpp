@@ -140,4 +140,14 @@ std::vector<double> sh_cosine_lobe_factors(int bands) {
   return f;
 }
 
+ShCoefficients sh_irradiance(const ShCoefficients& radiance) {
+  return scaled_by_band(radiance, sh_cosine_lobe_factors(radiance.bands));
+}
+
+ShCoefficients sh_lambertian(const ShCoefficients& radiance) {
+  std::vector<double> factors = sh_cosine_lobe_factors(radiance.bands);
+  for (double& f : factors) f /= kPi;
+  return scaled_by_band(radiance, factors);
+}
+
 }  // namespace lp

@@ -53,5 +53,7 @@ ShCoefficients scaled_by_band(const ShCoefficients& c, const std::vector<double>
 // reflects E / pi.
 double sh_cosine_lobe_factor(int l);
 std::vector<double> sh_cosine_lobe_factors(int bands);
+ShCoefficients sh_irradiance(const ShCoefficients& radiance);  // E_lm = A_l L_lm
+ShCoefficients sh_lambertian(const ShCoefficients& radiance);  // E_lm / pi
 
 }  // namespace lp

@@ -37,17 +37,13 @@ std::vector<Vec3> normals(int n) {
   return out;
 }
 
-ShCoefficients irradiance(const ShCoefficients& radiance) {
-  return scaled_by_band(radiance, sh_cosine_lobe_factors(radiance.bands));
-}
-
 TEST(ShProjection, AConstantMapIsTwoRootPiInL00AndPiOfIrradiance) {
   const Image one = map_of(256, 128, [](Vec3) { return Rgb{1, 1, 1}; });
   const ShCoefficients c = project_sh(one);
   for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.rgb[0][ch], 2 * std::sqrt(kPi), 1e-12);
   for (size_t i = 1; i < c.rgb.size(); ++i)
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(c.rgb[i][ch], 0.0, 1e-12) << i;
-  const ShCoefficients e = irradiance(c.truncated(3));
+  const ShCoefficients e = sh_irradiance(c.truncated(3));
   for (const Vec3 n : normals(20)) EXPECT_NEAR(e.evaluate(n.x, n.y, n.z)[1], kPi, 1e-12);
 }
 
@@ -118,7 +114,7 @@ struct Errors {
 };
 
 Errors irradiance_errors(const EnvMap& map, int bands) {
-  const ShCoefficients e = irradiance(sh_projection_cached(map)->radiance.truncated(bands));
+  const ShCoefficients e = sh_irradiance(sh_projection_cached(map)->radiance.truncated(bands));
   const auto ns = normals(256);
   std::vector<double> exact;
   double mean = 0;
