@@ -164,6 +164,11 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(light("intensity"), kIntensity, lighting.intensity));
 }
 
+void add_sun_parameters(std::vector<Doc>& d) {
+  d.push_back(
+      enum_doc(schema("RenderLighting", {"properties", "sun"}), std::optional(render::SunMode::None)));
+}
+
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
@@ -206,6 +211,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_enum_parameters(d);
   add_request_ranges(d);
   add_render_ranges(d);
+  add_sun_parameters(d);
   return d;
 }
 
