@@ -1,7 +1,6 @@
 #include "api/median_cut_request.hpp"
 
 #include <algorithm>
-#include <cctype>
 
 #include "api/api_error.hpp"
 #include "api/engine_validation.hpp"
@@ -17,8 +16,7 @@ int64_t max_count(const RequestLimits& limits) {
 }  // namespace
 
 MedianCutParams parse_median_cut_request(const std::string& body, const RequestLimits& limits) {
-  const bool empty = std::all_of(body.begin(), body.end(), [](unsigned char c) { return std::isspace(c); });
-  const Json j = empty ? Json::object() : parse_json_object(body);
+  const Json j = parse_optional_json_object(body);
   reject_unknown_fields(j, {"count", "placement", "split", "luminance"});
   const auto& c = kLightCount;
   MedianCutParams p;

@@ -10,6 +10,7 @@
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
 #include "engine/render/scene_desc.hpp"
+#include "engine/sun/sun_params.hpp"
 
 namespace lp::api {
 namespace {
@@ -165,6 +166,11 @@ void add_render_ranges(std::vector<Doc>& d) {
 }
 
 void add_sun_parameters(std::vector<Doc>& d) {
+  const std::string sun = "/api/v1/envmaps/{id}/sun";
+  const SunParams p;
+  d.push_back(range_doc(body(sun, "threshold"), limits::kSunThreshold, p.threshold));
+  d.push_back(range_doc(body(sun, "max_radius_deg"), limits::kSunMaxRadiusDeg, p.max_radius_deg));
+  d.push_back(range_doc(body(sun, "min_share"), limits::kSunMinShare, p.min_share));
   d.push_back(
       enum_doc(schema("RenderLighting", {"properties", "sun"}), std::optional(render::SunMode::None)));
 }

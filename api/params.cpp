@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 
@@ -118,6 +120,11 @@ Json parse_json_object(std::string_view body) {
   Json j = parse_json(body);
   if (!j.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   return j;
+}
+
+Json parse_optional_json_object(std::string_view body) {
+  const bool empty = std::all_of(body.begin(), body.end(), [](unsigned char c) { return std::isspace(c); });
+  return empty ? Json::object() : parse_json_object(body);
 }
 
 void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,

@@ -34,6 +34,9 @@ inline constexpr int kMaxJsonDepth = 64;
 Json parse_json(std::string_view text, std::string_view what = "the request body");
 // As parse_json, and 400 "invalid_json" unless the value is an object.
 Json parse_json_object(std::string_view body);
+// The same, and an empty (or all white space) body as the empty object: a POST whose fields all have
+// defaults.
+Json parse_optional_json_object(std::string_view body);
 // Fails with 400 naming the first key of `body` not in `known` (catches typos like "cout").
 void reject_unknown_fields(const Json& body, const std::vector<std::string>& known,
                            const std::string& prefix = "");
