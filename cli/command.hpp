@@ -23,5 +23,6 @@ Command median_cut_command();
 Command fresnel_command();
 Command render_command();
 Command convert_command();
+Command sun_command();
 
 }  // namespace lp::cli

@@ -16,7 +16,8 @@ namespace {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> all = {info_command(),    sample_command(), median_cut_command(),
-                                           fresnel_command(), render_command(), convert_command()};
+                                           fresnel_command(), render_command(), convert_command(),
+                                           sun_command()};
   return all;
 }
 
