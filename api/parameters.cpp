@@ -11,6 +11,7 @@
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
 #include "engine/render/scene_desc.hpp"
+#include "engine/sun/sun_params.hpp"
 
 namespace lp::api {
 namespace {
@@ -177,6 +178,16 @@ void add_prefilter_parameters(std::vector<Doc>& d) {
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "precision"}), std::optional<PixelPrecision>()));
 }
 
+void add_sun_parameters(std::vector<Doc>& d) {
+  const std::string sun = "/api/v1/envmaps/{id}/sun";
+  const SunParams p;
+  d.push_back(range_doc(body(sun, "threshold"), limits::kSunThreshold, p.threshold));
+  d.push_back(range_doc(body(sun, "max_radius_deg"), limits::kSunMaxRadiusDeg, p.max_radius_deg));
+  d.push_back(range_doc(body(sun, "min_share"), limits::kSunMinShare, p.min_share));
+  d.push_back(
+      enum_doc(schema("RenderLighting", {"properties", "sun"}), std::optional(render::SunMode::None)));
+}
+
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
@@ -220,6 +231,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_request_ranges(d);
   add_render_ranges(d);
   add_prefilter_parameters(d);
+  add_sun_parameters(d);
   return d;
 }
 

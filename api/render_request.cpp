@@ -217,8 +217,9 @@ Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
   lighting.lights = std::min(lighting.lights, max_lights);
   if (!l) return lighting;
   const std::string prefix = "lighting";
-  reject_unknown_fields(*l, {"mode", "lights", "rotation_deg", "intensity", "visible"}, prefix);
+  reject_unknown_fields(*l, {"mode", "sun", "lights", "rotation_deg", "intensity", "visible"}, prefix);
   lighting.mode = json_enum(*l, "mode", lighting.mode, prefix);
+  lighting.sun = json_enum(*l, "sun", lighting.sun, prefix);
   lighting.lights = int(json_int(*l, "lights", lighting.lights, 1, max_lights, prefix));
   lighting.rotation_deg = json_float(*l, "rotation_deg", lighting.rotation_deg, prefix);
   lighting.intensity = json_float(*l, "intensity", lighting.intensity, prefix);

@@ -25,5 +25,6 @@ Command render_command();
 Command convert_command();
 Command sh_command();
 Command brdf_lut_command();
+Command sun_command();
 
 }  // namespace lp::cli

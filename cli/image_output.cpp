@@ -12,17 +12,22 @@
 
 namespace lp::cli {
 
+std::optional<ImageFormat> image_format_of_name(const std::string& file) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return parse_enum<ImageFormat>(std::string_view(extension).substr(std::min<size_t>(1, extension.size())));
+}
+
 api::PreviewParams take_image_params(Arguments& args, const std::optional<std::string>& file) {
   api::Query query = args.take_query({"format", "exposure", "gamma"});
   if (!query.count("format") && file && *file != "-") {
-    std::string extension = std::filesystem::path(*file).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    if (!parse_enum<ImageFormat>(std::string_view(extension).substr(std::min<size_t>(1, extension.size()))))
+    const auto format = image_format_of_name(*file);
+    if (!format)
       throw api::ApiError(api::ErrorCode::BadRequest,
                           fmt::format("cannot tell an image format from the name '{}': give --format ({})",
                                       api::excerpt(*file), enum_names_joined<ImageFormat>()));
-    query.emplace("format", extension.substr(1));
+    query.emplace("format", enum_name(*format));
   }
   return api::parse_preview_params(query);
 }

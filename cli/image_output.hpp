@@ -9,6 +9,9 @@
 
 namespace lp::cli {
 
+// The format a file name's extension names (.exr, .pfm, .hdr, .png, any case), if it names one.
+std::optional<ImageFormat> image_format_of_name(const std::string& file);
+
 // Takes --format, --exposure and --gamma. Throws bad_request when neither --format nor the extension of
 // `file` names a format.
 api::PreviewParams take_image_params(Arguments& args, const std::optional<std::string>& file);

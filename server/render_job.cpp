@@ -204,6 +204,7 @@ void RenderJob::describe(nlohmann::json& out) const {
   out["scene"] = request_.preset ? nlohmann::json{{"preset", *request_.preset}}
                                  : nlohmann::json{{"objects", request_.scene.objects.size()}};
   out["lighting_mode"] = enum_name(request_.lighting.mode);
+  out["lighting_sun"] = enum_name(request_.lighting.sun);
   out["samples"] = stats_.samples;
   out["rays"] = stats_.rays;
   out["samples_per_s"] = render_s_ > 0 ? double(stats_.samples) / render_s_ : 0.0;

@@ -21,6 +21,7 @@ void register_median_cut_routes(Router& router, App& app);  // median-cut lights
 void register_sh_routes(Router& router, App& app);          // spherical harmonics and their picture
 void register_brdf_lut_routes(Router& router, App& app);    // the split-sum DFG table
 void register_prefilter_routes(Router& router, App& app);   // prefiltered specular chains: jobs, files
+void register_sun_routes(Router& router, App& app);         // sun extraction and its residual map
 void register_metrics_routes(Router& router, App& app);     // GET /metrics (Prometheus)
 
 }  // namespace lp::server

@@ -86,6 +86,7 @@ Server::Server(App& app)
   register_sh_routes(router_, app_);
   register_brdf_lut_routes(router_, app_);
   register_prefilter_routes(router_, app_);
+  register_sun_routes(router_, app_);
   register_metrics_routes(router_, app_);
 }
 

@@ -47,6 +47,8 @@ class EnvMap {
   // The budget the map's memory comes from: `image` holds the image's bytes, and derived data built
   // from now on reserves its own (see derived). Call before the map is shared.
   void account_memory(MemoryBudget budget, MemoryReservation image);
+  // That budget (unlimited until account_memory): a map made from this one reserves from it too.
+  const MemoryBudget& memory_budget() const { return budget_; }
   // Bytes reserved now for the image and the derived data in the cache.
   int64_t memory_bytes() const;
   static int64_t image_bytes(int64_t width, int64_t height) {

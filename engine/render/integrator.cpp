@@ -22,9 +22,9 @@ bool is_black(Rgb c) {
 }  // namespace
 
 Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs,
-                       const EnvLight& env, const std::vector<DirectionalLight>& lights,
+                       const EnvLight& env, const SunLight* sun, const std::vector<DirectionalLight>& lights,
                        const IntegratorConfig& config)
-    : scene_(scene), bsdfs_(bsdfs), env_(env), lights_(lights), config_(config) {}
+    : scene_(scene), bsdfs_(bsdfs), env_(env), sun_(sun), lights_(lights), config_(config) {}
 
 Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const {
   Rgb result{}, beta{1, 1, 1};
@@ -41,6 +41,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     if (!hit) {
       if (depth == 0) escape = env_.locate(ray.direction);
       result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf);
+      if (sun_) result += beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf);
       break;
     }
     cone.advance(hit->t);
@@ -55,8 +56,12 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     const Point2 u_choice = sampler.get_2d();  // x: which light, y: which BSDF lobe
     const Point2 u_bsdf = sampler.get_2d();
     const float u_roulette = sampler.get_1d();
+    const Point2 u_sun = sun_ ? sampler.get_2d() : Point2{};  // drawn last: renders without a sun keep theirs
 
-    if (bsdf.has_non_delta_lobe()) result += beta * direct(shading, u_light, u_choice.x, rays);
+    if (bsdf.has_non_delta_lobe()) {
+      result += beta * direct(shading, u_light, u_choice.x, rays);
+      if (sun_) result += beta * direct_env(shading, sun_->sample(u_sun), sun_->pdf(), rays);
+    }
 
     const std::optional<BsdfSample> s = bsdf.sample(shading.wo, u_choice.y, u_bsdf);
     if (!s || is_black(s->weight)) break;
@@ -119,6 +124,12 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
       return delta_chain ? seen : Rgb{};
   }
   return {};
+}
+
+Rgb Integrator::escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf) const {
+  if (!sun_->contains(direction)) return {};
+  if (depth == 0) return config_.env_visible ? sun_->radiance() : Rgb{};
+  return last_delta ? sun_->radiance() : sun_->radiance() * power_heuristic(bsdf_pdf, sun_->pdf());
 }
 
 Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const {

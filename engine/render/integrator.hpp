@@ -1,7 +1,9 @@
 #pragma once
 // Unidirectional path tracing with next-event estimation. The light is the environment map, sampled
 // per the lighting mode:
-//   envmap:  importance sampling of the map, combined with BSDF sampling by MIS (power heuristic);
+//   envmap:  importance sampling of the map, combined with BSDF sampling by MIS (power heuristic); with
+//            a sun taken out of the map (sun_light.hpp), the sun is sampled too at every bounce, its own
+//            MIS against BSDF sampling, and the map is its residual;
 //   uniform: uniform sphere sampling, with MIS;
 //   bsdf:    no light sampling, paths count the map when they escape;
 //   median_cut / median_cut_all: directional lights from median cut, one picked per shading point
@@ -20,6 +22,7 @@
 #include "engine/render/env_light.hpp"
 #include "engine/render/frame.hpp"
 #include "engine/render/ray_cone.hpp"
+#include "engine/render/sun_light.hpp"
 
 namespace lp::render {
 
@@ -34,8 +37,10 @@ struct IntegratorConfig {
 
 class Integrator {
  public:
+  // `sun`: the sun taken out of the map, or null.
   Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs, const EnvLight& env,
-             const std::vector<DirectionalLight>& lights, const IntegratorConfig& config);
+             const SunLight* sun, const std::vector<DirectionalLight>& lights,
+             const IntegratorConfig& config);
 
   // Radiance along a camera ray. Adds the rays it traces to `rays`.
   Rgb radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const;
@@ -59,6 +64,8 @@ class Integrator {
   }
   Rgb escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
               float bsdf_pdf) const;
+  // The sun seen along an escaping ray, weighed as escaped() weighs the map.
+  Rgb escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf) const;
   Rgb direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const;
   Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;
   Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const;
@@ -67,6 +74,7 @@ class Integrator {
   const EmbreeScene& scene_;
   const std::vector<std::unique_ptr<Bsdf>>& bsdfs_;
   const EnvLight& env_;
+  const SunLight* sun_;
   const std::vector<DirectionalLight>& lights_;
   IntegratorConfig config_;
 };

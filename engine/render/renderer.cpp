@@ -23,6 +23,7 @@
 #include "engine/render/film.hpp"
 #include "engine/render/integrator.hpp"
 #include "engine/render/path_sampler.hpp"
+#include "engine/render/sun_light.hpp"
 
 namespace lp::render {
 namespace {
@@ -60,12 +61,14 @@ struct Renderer::Impl {
       : settings(s),
         camera(scene.camera, s.width, s.height),
         bsdfs(make_bsdfs(scene)),
-        env(std::move(envmap), lighting),
+        split(split_sun(std::move(envmap), lighting)),
+        env(split.environment, lighting),
+        sun(split.sun ? std::optional<SunLight>(SunLight(*split.sun, env)) : std::nullopt),
         lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights)
                                           : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),
         integrator(
-            geometry, bsdfs, env, lights,
+            geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
             {lighting.mode, s.max_depth, lighting.visible, camera.pixel_spread(), s.mipmaps, s.normal_maps}),
         film(s.width, s.height),
         tiles_x((s.width + kTileSize - 1) / kTileSize),
@@ -101,7 +104,9 @@ struct Renderer::Impl {
   RenderSettings settings;
   PerspectiveCamera camera;
   std::vector<std::unique_ptr<Bsdf>> bsdfs;
+  SunSplit split;
   EnvLight env;
+  std::optional<SunLight> sun;
   std::vector<DirectionalLight> lights;
   EmbreeScene geometry;
   Integrator integrator;

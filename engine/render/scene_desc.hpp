@@ -96,12 +96,20 @@ constexpr auto enum_entries(LightingMode) {
                                                  {LightingMode::MedianCutAll, "median_cut_all"}});
 }
 
+// Whether an envmap render takes the map's sun out as a light of its own (engine/render/sun_light.hpp).
+enum class SunMode { None, Extract };
+constexpr auto enum_entries(SunMode) {
+  return std::to_array<EnumEntry<SunMode>>({{SunMode::None, "none"}, {SunMode::Extract, "extract"}});
+}
+
 struct Lighting {
   LightingMode mode = LightingMode::EnvMap;
   int lights = 64;         // median-cut light count
   float rotation_deg = 0;  // about z
   float intensity = 1;
   bool visible = true;  // the camera sees the map
+  // extract (with mode envmap only): the map's sun becomes a light of its own.
+  SunMode sun = SunMode::None;
   // The widest importance grid (env_light.hpp): a wider map is sampled on its first coarser level
   // that fits. Not a request field: the engine's trade between sampling memory and fidelity.
   int importance_max_width = limits::kDefaultImportanceMaxWidth;

@@ -11,8 +11,8 @@
 namespace lp {
 namespace {
 
-const std::vector<std::string> kCommands = {"info",   "sample",  "median-cut", "fresnel",
-                                            "render", "convert", "sh",         "brdf-lut"};
+const std::vector<std::string> kCommands = {"info",    "sample", "median-cut", "fresnel", "render",
+                                            "convert", "sh",     "brdf-lut",   "sun"};
 
 TEST(CliUsage, HelpForTheToolAndEveryCommand) {
   for (const std::vector<std::string>& args :
@@ -48,7 +48,7 @@ TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"paint"},
        "unknown command 'paint' (expected one of: info, sample, median-cut, fresnel, render, convert, sh, "
-       "brdf-lut)"},
+       "brdf-lut, sun)"},
       {{"info"}, "usage: lightprobe info MAP [options] (see --help)"},
       {{"info", "a.exr", "b.exr"}, "usage: lightprobe info MAP [options] (see --help)"},
       {{"info", "default", "--colour", "red"}, "unknown option '--colour' (see lightprobe info --help)"},

@@ -227,6 +227,14 @@ TEST(RenderRequest, BadTopLevelSceneCameraAndLightingFields) {
   expect_field_error(R"({"envmap":"e","lighting":{"intensity":-1}})", "lighting.intensity");
   expect_field_error(R"({"envmap":"e","lighting":{"visible":"yes"}})", "lighting.visible");
   expect_field_error(R"({"envmap":"e","lighting":{"rotation":90}})", "lighting.rotation");
+  expect_field_error(R"({"envmap":"e","lighting":{"sun":"keep"}})", "lighting.sun");
+  expect_field_error(R"({"envmap":"e","lighting":{"mode":"median_cut","sun":"extract"}})", "lighting.sun");
+}
+
+TEST(RenderRequest, TheSunIsExtractedOnlyWhenAsked) {
+  EXPECT_EQ(parse(R"({"envmap":"e"})").lighting.sun, SunMode::None);
+  EXPECT_EQ(parse(R"({"envmap":"e","lighting":{"sun":"extract"}})").lighting.sun, SunMode::Extract);
+  EXPECT_EQ(parse(R"({"envmap":"e","lighting":{"mode":"envmap","sun":"none"}})").lighting.sun, SunMode::None);
 }
 
 TEST(RenderRequest, MipmapsAndNormalMapsTurnOffEachAlone) {

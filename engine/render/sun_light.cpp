@@ -1,0 +1,43 @@
+#include "engine/render/sun_light.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/constants.hpp"
+#include "engine/sun/sun_extraction.hpp"
+
+namespace lp::render {
+
+SunLight::SunLight(const Sun& sun, const EnvLight& env)
+    : frame_(Frame::from_normal(normalize(env.to_world(sun.direction)))) {
+  const double s = std::sin(sun.angular_radius / 2), one_minus_cos = 2 * s * s;
+  const double solid_angle = cone_solid_angle(sun.angular_radius);
+  one_minus_cos_ = float(one_minus_cos);
+  chord_squared_ = float(2 * one_minus_cos);
+  pdf_ = float(1 / solid_angle);
+  const auto channel = [&](int c) { return float(sun.power[size_t(c)] / solid_angle) * env.intensity(); };
+  radiance_ = {channel(0), channel(1), channel(2)};
+}
+
+LightSample SunLight::sample(Point2 u) const {
+  // cos theta = 1 - u (1 - cos r); sin theta from the same product, exact where cos theta rounds to 1.
+  const float a = u.x * one_minus_cos_;
+  const float sin_theta = std::sqrt(std::max(0.0f, a * (2 - a)));
+  const float phi = 2 * kPiF * u.y;
+  const Vec3 local{sin_theta * std::cos(phi), sin_theta * std::sin(phi), 1 - a};
+  return {normalize(frame_.to_world(local)), radiance_, pdf_};
+}
+
+bool SunLight::contains(Vec3 d) const {
+  const Vec3 chord = d - frame_.n;
+  return dot(chord, chord) <= chord_squared_;
+}
+
+SunSplit split_sun(std::shared_ptr<const EnvMap> map, const Lighting& lighting) {
+  if (lighting.sun == SunMode::None || !map) return {std::move(map), std::nullopt};
+  SunExtraction extraction = extract_sun(*map, SunParams{});
+  if (!extraction.sun) return {std::move(map), std::nullopt};
+  return {std::move(extraction.residual), extraction.sun};
+}
+
+}  // namespace lp::render
