@@ -9,6 +9,8 @@
 #include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
+#include "engine/projection/cube_face.hpp"
+#include "engine/projection/projection.hpp"
 #include "engine/render/scene_desc.hpp"
 
 namespace lp::api {
@@ -164,6 +166,15 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(light("intensity"), kIntensity, lighting.intensity));
 }
 
+void add_projection_parameters(std::vector<Doc>& d) {
+  const std::string image = "/api/v1/envmaps/{id}/image";
+  d.push_back(enum_doc(query(image, "get", "projection"), std::optional(Projection::LatLong)));
+  d.push_back(range_doc(query(image, "get", "size"), limits::kProjectionSize));
+  d.push_back(enum_doc(query(image, "get", "face"), std::optional<CubeFace>()));
+  d.push_back(enum_doc(query("/api/v1/envmaps", "post", "projection"), std::optional(Projection::LatLong)));
+  d.push_back(enum_doc(schema("EnvMap", {"properties", "source_projection"}), std::optional<Projection>()));
+}
+
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
@@ -206,6 +217,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_enum_parameters(d);
   add_request_ranges(d);
   add_render_ranges(d);
+  add_projection_parameters(d);
   return d;
 }
 

@@ -72,5 +72,9 @@ inline constexpr Range<double> kFresnelStepDeg{0.01, 90.0};
 // band 1's, and higher bands ring).
 inline constexpr Range<int> kShBands{1, 5};
 
+// Projections of a map (engine/projection): the face size of a cube or cross, the side of an octahedral or
+// equal-area square. The answer's pixels are bounded by the largest map (--max-pixels) too.
+inline constexpr Range<int64_t> kProjectionSize{2, 8192};
+
 }  // namespace limits
 }  // namespace lp

@@ -14,8 +14,9 @@ bool ProjectionSource::needs_split(Vec3d a, Vec3d b) const {
 
 std::unique_ptr<const ProjectionSource> make_projection_source(const Image& image, Projection projection) {
   if (!projection_size(projection, image.width(), image.height()))
-    throw Error(ErrorKind::InvalidArgument, std::string("a ") + enum_name(projection) + " map must be " +
-                                                projection_shape_rule(projection));
+    throw Error(ErrorKind::InvalidArgument, std::string("the image must be ") +
+                                                projection_shape_rule(projection) + " for projection " +
+                                                enum_name(projection));
   switch (projection) {
     case Projection::LatLong:
       return make_latlong_source(image);
