@@ -20,19 +20,22 @@ class CubeSource final : public ProjectionSource {
     const int face = cube_face_point(polygon[0]).face;
     bool one_face = true;
     for (const Vec3d& p : polygon) one_face = one_face && cube_face_point(p).face == face;
-    if (one_face) return integrate_on_face(face, polygon, s, sum);
+    if (one_face) return integrate_on_face(face, polygon, s, sum, true);
     for (int f = 0; f < kCubeFaces; ++f) {
       const CubeFaceFrame& frame = cube_face_frame(f);
       if (clip_to_hemispheres(polygon,
                               {frame.look - frame.right, frame.look + frame.right, frame.look - frame.down,
                                frame.look + frame.down},
                               s.clipped, s.spare))
-        integrate_on_face(f, s.clipped, s, sum);
+        integrate_on_face(f, s.clipped, s, sum, false);
     }
   }
 
  private:
-  void integrate_on_face(int face, std::span<const Vec3d> polygon, SourceScratch& s, TexelSum& sum) const {
+  // `whole`: the polygon is the whole target texel. If it then lies in one source texel, it takes that
+  // texel's value whatever its area, which is not worked out.
+  void integrate_on_face(int face, std::span<const Vec3d> polygon, SourceScratch& s, TexelSum& sum,
+                         bool whole) const {
     const CubeFaceFrame& frame = cube_face_frame(face);
     s.plane.clear();
     for (const Vec3d& p : polygon) {
@@ -40,6 +43,7 @@ class CubeSource final : public ProjectionSource {
       s.plane.push_back({dot(p, frame.right) / look, dot(p, frame.down) / look});
     }
     for_each_cell_piece(s.plane, axis_, axis_, s.grid, [&](int i, int j, const PlanePolygon& piece) {
+      if (whole && &piece == &s.plane) return sum.add(faces_.row(j) + 3 * (face * size_ + i), 1.0);
       s.lifted.clear();
       for (const Point2d& ab : piece) s.lifted.push_back(cube_face_direction(face, ab));
       const double area = spherical_polygon_area(s.lifted);

@@ -8,10 +8,21 @@ GridAxis GridAxis::uniform(double start, double step, int cells, bool open) {
   return a;
 }
 
+// A table's cells are found from uniform buckets, four per cell: the cell at a bucket's start, then
+// forward along the edges (cells thinner than a bucket, as a lat-long map's rows at the poles, take a
+// few steps).
 GridAxis GridAxis::table(std::vector<double> edges) {
   GridAxis a;
   a.cells_ = int(edges.size()) - 1;
   a.edges_ = std::move(edges);
+  const int buckets = 4 * a.cells_;
+  a.start_ = a.edges_.front();
+  a.step_ = (a.edges_.back() - a.edges_.front()) / buckets;
+  int k = 0;
+  for (int b = 0; b < buckets; ++b) {
+    while (k + 1 < a.cells_ && a.edges_[size_t(k) + 1] <= a.start_ + b * a.step_) ++k;
+    a.bucket_cell_.push_back(k);
+  }
   return a;
 }
 
@@ -23,7 +34,10 @@ int GridAxis::cell(double v) const {
     if (v >= edge(k + 1)) ++k;
     if (open_) return k;
   } else {
-    k = int(std::upper_bound(edges_.begin(), edges_.end(), v) - edges_.begin()) - 1;
+    const int b = std::clamp(int((v - start_) / step_), 0, int(bucket_cell_.size()) - 1);
+    k = bucket_cell_[size_t(b)];
+    while (k > 0 && v < edges_[size_t(k)]) --k;  // a bucket's start rounded past v
+    while (k + 1 < cells_ && v >= edges_[size_t(k) + 1]) ++k;
   }
   return std::clamp(k, 0, cells_ - 1);
 }

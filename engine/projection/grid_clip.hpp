@@ -28,6 +28,7 @@ class GridAxis {
   int cells_ = 0;
   bool open_ = false;
   std::vector<double> edges_;
+  std::vector<int> bucket_cell_;  // a table's cell at the start of each of its uniform buckets
 };
 
 // The part of `in` with coordinate `axis` (0: x, 1: y) below `value` into `below`, the rest into `above`.

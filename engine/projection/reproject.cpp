@@ -3,6 +3,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
 #include "engine/projection/projection_source.hpp"
 #include "engine/projection/projection_texels.hpp"
 #include "engine/projection/target_panels.hpp"
@@ -41,8 +43,11 @@ class RowResampler {
   }
 
  private:
+  // Rounding can leave a cell a texel does not cover an area of about 1e-17 of its own, of either sign:
+  // next to radiance some 1e17 times brighter, a black texel could come out below zero.
   static Rgb mean(const TexelSum& sum) {
-    return {float(sum.r / sum.area), float(sum.g / sum.area), float(sum.b / sum.area)};
+    const auto channel = [&](double v) { return float(std::max(0.0, v / sum.area)); };
+    return {channel(sum.r), channel(sum.g), channel(sum.b)};
   }
   // For a texel too small to cut: the source texel at its centre.
   Rgb nearest(Vec3d centre) const {

@@ -37,12 +37,12 @@ class SquareSource final : public ProjectionSource {
     const Octant octant = octant_of(polygon[0]);
     bool one_octant = true;
     for (const Vec3d& p : polygon) one_octant = one_octant && same_octant(octant_of(p), octant);
-    if (one_octant) return integrate_in_octant(octant, polygon, s, sum);
+    if (one_octant) return integrate_in_octant(octant, polygon, s, sum, true);
     for (int k = 0; k < 8; ++k) {
       const Octant o{k & 1 ? -1.0 : 1.0, k & 2 ? -1.0 : 1.0, k & 4 ? -1.0 : 1.0};
       if (clip_to_hemispheres(polygon, {Vec3d{o.x, 0, 0}, Vec3d{0, o.y, 0}, Vec3d{0, 0, o.z}}, s.clipped,
                               s.spare))
-        integrate_in_octant(o, s.clipped, s, sum);
+        integrate_in_octant(o, s.clipped, s, sum, false);
     }
   }
 
@@ -64,13 +64,16 @@ class SquareSource final : public ProjectionSource {
     return spherical_polygon_area(s.lifted);
   }
 
-  void integrate_in_octant(Octant o, std::span<const Vec3d> polygon, SourceScratch& s, TexelSum& sum) const {
+  // `whole`: as CubeSource's integrate_on_face.
+  void integrate_in_octant(Octant o, std::span<const Vec3d> polygon, SourceScratch& s, TexelSum& sum,
+                           bool whole) const {
     s.plane.clear();
     for (const Vec3d& p : polygon) s.plane.push_back(square(o, p));
     if (equal_area_)
       return s.coverage.cover(s.plane, axis_, axis_,
                               [&](int i, int j, double area) { sum.add(image_.row(j) + 3 * i, area * kPi); });
     for_each_cell_piece(s.plane, axis_, axis_, s.grid, [&](int i, int j, const PlanePolygon& piece) {
+      if (whole && &piece == &s.plane) return sum.add(image_.row(j) + 3 * i, 1.0);
       const double area = piece_area(o, piece, s);
       if (area != 0) sum.add(image_.row(j) + 3 * i, area);
     });
