@@ -111,9 +111,13 @@ void TargetPanel::outline(int i, int j, const std::array<Vec3d, 4>& corners, con
   out.clear();
   for (size_t k = 0; k < 4; ++k) {
     const size_t next = (k + 1) % 4;
+    if (!square) {  // no folds: the side alone
+      add_side(at[k], corners[k], at[next], corners[next], rule, 0, out);
+      continue;
+    }
     SidePoints side;
     side.add(at[k]);
-    if (square) add_fold_crossings(at[k], at[next], width_, side);
+    add_fold_crossings(at[k], at[next], width_, side);
     side.add(at[next]);
     Vec3d d = corners[k];
     for (size_t s = 1; s < side.count; ++s) {
