@@ -22,6 +22,7 @@ Json envmap_metadata(const EnvMapInfo& info, const EnvMap& map) {
           {"memory_bytes", map.memory_bytes()},
           {"format", info.format},
           {"source", info.source},
+          {"source_projection", enum_name(info.source_projection)},
           {"mean_radiance", rgb_json(map.mean_radiance())},
           {"max_luminance", map.max_luminance(LuminanceMode::Average)},
           {"power", rgb_json(map.power())},

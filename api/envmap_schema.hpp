@@ -5,12 +5,14 @@
 
 #include "api/params.hpp"
 #include "engine/envmap/envmap.hpp"
+#include "engine/projection/projection.hpp"
 
 namespace lp::api {
 
 struct EnvMapInfo {
   std::string id, name, format, source;
   std::chrono::system_clock::time_point created;
+  Projection source_projection = Projection::LatLong;
 };
 
 Json envmap_metadata(const EnvMapInfo& info, const EnvMap& map);

@@ -10,6 +10,8 @@
 #include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
+#include "engine/projection/cube_face.hpp"
+#include "engine/projection/projection.hpp"
 #include "engine/render/scene_desc.hpp"
 #include "engine/sun/sun_params.hpp"
 
@@ -188,6 +190,15 @@ void add_sun_parameters(std::vector<Doc>& d) {
       enum_doc(schema("RenderLighting", {"properties", "sun"}), std::optional(render::SunMode::None)));
 }
 
+void add_projection_parameters(std::vector<Doc>& d) {
+  const std::string image = "/api/v1/envmaps/{id}/image";
+  d.push_back(enum_doc(query(image, "get", "projection"), std::optional(Projection::LatLong)));
+  d.push_back(range_doc(query(image, "get", "size"), limits::kProjectionSize));
+  d.push_back(enum_doc(query(image, "get", "face"), std::optional<CubeFace>()));
+  d.push_back(enum_doc(query("/api/v1/envmaps", "post", "projection"), std::optional(Projection::LatLong)));
+  d.push_back(enum_doc(schema("EnvMap", {"properties", "source_projection"}), std::optional<Projection>()));
+}
+
 }  // namespace
 
 const std::vector<const IntParameter*>& int_parameters() {
@@ -232,6 +243,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_render_ranges(d);
   add_prefilter_parameters(d);
   add_sun_parameters(d);
+  add_projection_parameters(d);
   return d;
 }
 

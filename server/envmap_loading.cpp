@@ -8,7 +8,9 @@
 
 #include "api/api_error.hpp"
 #include "api/builtin_maps.hpp"
+#include "api/projection_params.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
+#include "engine/projection/reproject.hpp"
 #include "server/resource_name.hpp"
 
 namespace lp::server {
@@ -46,25 +48,47 @@ ImageLimits budgeted_limits(App& app, DecodeMemory& memory) {
   return limits;
 }
 
+// An image in another projection becomes a lat-long map: its bad pixels are fixed (or refused, naming the
+// file's pixel) first, so none spreads over its neighbours; `pixels` then holds the converted image's
+// bytes, reserved before the conversion. What the policy changed.
+InvalidPixelReport convert_to_latlong(App& app, Image& image, Projection projection,
+                                      InvalidPixelPolicy policy, MemoryReservation& pixels) {
+  if (projection == Projection::LatLong) return {};
+  const int width =
+      api::input_latlong_width(projection, image.width(), image.height(), app.options.limits.max_pixels);
+  MemoryReservation converted =
+      app.memory.reserve(EnvMap::image_bytes(width, width / 2), MemoryUse::Transient,
+                         fmt::format("converting a {} map to lat-long", enum_name(projection)));
+  const InvalidPixelReport fixed = sanitize_radiance(image, policy);
+  image = reproject(image, projection, Projection::LatLong, width);
+  pixels = std::move(converted);
+  return fixed;
+}
+
 // `pixels` holds the image's bytes; they stay with the map.
 std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& name, DecodedImage decoded,
                                                   const std::string& format, const std::string& source,
-                                                  InvalidPixelPolicy policy, MemoryReservation pixels) {
+                                                  InvalidPixelPolicy policy, MemoryReservation pixels,
+                                                  Projection projection = Projection::LatLong) {
   const auto start = std::chrono::steady_clock::now();
-  auto map = std::make_shared<EnvMap>(std::move(decoded.image), policy);
+  const InvalidPixelReport fixed_in_file = convert_to_latlong(app, decoded.image, projection, policy, pixels);
+  auto map = std::make_shared<EnvMap>(std::move(decoded.image), policy, fixed_in_file);
   pixels.set_use(MemoryUse::Held);
   map->account_memory(app.memory, std::move(pixels));
   map->sampler(LuminanceMode::Average);  // precompute the default distribution once, now
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  auto entry = app.envmaps.add(name, format, source, std::move(map));
+  auto entry = app.envmaps.add(name, format, source, std::move(map), projection);
   if (const auto& fixed = entry->map->invalid_pixels();
       fixed.clamped_negative_values || fixed.non_finite_pixels)
     spdlog::warn(
         "map '{}': clamped {} negative values (lowest {}) to zero and set {} non-finite pixels to black",
         name, fixed.clamped_negative_values, fixed.most_negative_value, fixed.non_finite_pixels);
-  spdlog::info("loaded map '{}' ({}x{} {}, from {}) in {:.1f} ms", name, entry->map->width(),
-               entry->map->height(), entry->format, source, ms);
+  spdlog::info(
+      "loaded map '{}' ({}x{} {}{}, from {}) in {:.1f} ms", name, entry->map->width(), entry->map->height(),
+      entry->format,
+      projection == Projection::LatLong ? "" : std::string(" converted from ") + enum_name(projection),
+      source, ms);
   return entry;
 }
 
@@ -78,19 +102,19 @@ ImageLimits image_limits(const Options& options) {
 
 std::shared_ptr<const EnvMapEntry> register_envmap_bytes(App& app, const std::string& name,
                                                          std::span<const uint8_t> bytes,
-                                                         const std::string& source,
-                                                         InvalidPixelPolicy policy) {
+                                                         const std::string& source, InvalidPixelPolicy policy,
+                                                         Projection projection) {
   check_new_name(app, name);
   DecodeMemory memory;
   DecodedImage decoded = read_image(bytes, budgeted_limits(app, memory));
   return register_image(app, name, std::move(decoded), enum_name(decoded.format), source, policy,
-                        std::move(memory.pixels));
+                        std::move(memory.pixels), projection);
 }
 
 std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::string& name,
                                                         const std::filesystem::path& path,
-                                                        const std::string& source,
-                                                        InvalidPixelPolicy policy) {
+                                                        const std::string& source, InvalidPixelPolicy policy,
+                                                        Projection projection) {
   check_new_name(app, name);
   std::error_code unknown_size;
   const auto file_bytes = std::filesystem::file_size(path, unknown_size);
@@ -99,7 +123,7 @@ std::shared_ptr<const EnvMapEntry> register_envmap_file(App& app, const std::str
   DecodeMemory memory;
   DecodedImage decoded = read_image_file(path, budgeted_limits(app, memory));
   return register_image(app, name, std::move(decoded), enum_name(decoded.format), source, policy,
-                        std::move(memory.pixels));
+                        std::move(memory.pixels), projection);
 }
 
 void register_default_envmap(App& app) {

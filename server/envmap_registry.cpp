@@ -5,10 +5,11 @@
 namespace lp::server {
 
 std::shared_ptr<const EnvMapEntry> EnvMapRegistry::add(const std::string& name, std::string format,
-                                                       std::string source,
-                                                       std::shared_ptr<const EnvMap> map) {
+                                                       std::string source, std::shared_ptr<const EnvMap> map,
+                                                       Projection source_projection) {
   auto entry = std::make_shared<EnvMapEntry>(EnvMapEntry{name, name, std::move(format), std::move(source),
-                                                         std::move(map), std::chrono::system_clock::now()});
+                                                         std::move(map), std::chrono::system_clock::now(),
+                                                         source_projection});
   std::lock_guard lock(mutex_);
   if (entries_.count(name))
     throw api::ApiError(api::ErrorCode::Conflict, "an environment map named '" + name + "' exists");

@@ -10,6 +10,7 @@
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/projection/projection.hpp"
 
 namespace lp::server {
 
@@ -20,6 +21,7 @@ struct EnvMapEntry {
   std::string source;  // "upload", "path:<relative>", "procedural"
   std::shared_ptr<const EnvMap> map;
   std::chrono::system_clock::time_point created;
+  Projection source_projection = Projection::LatLong;  // the file's layout, converted to lat-long on load
 };
 
 // Ids are the map names (server/resource_name.hpp).
@@ -29,7 +31,8 @@ class EnvMapRegistry {
 
   // Throws ApiError 409 if the name is taken, 507 when full.
   std::shared_ptr<const EnvMapEntry> add(const std::string& name, std::string format, std::string source,
-                                         std::shared_ptr<const EnvMap> map);
+                                         std::shared_ptr<const EnvMap> map,
+                                         Projection source_projection = Projection::LatLong);
   std::shared_ptr<const EnvMapEntry> find(const std::string& id) const;  // nullptr if absent
   std::shared_ptr<const EnvMapEntry> get(const std::string& id) const;   // throws ApiError 404
   bool remove(const std::string& id);

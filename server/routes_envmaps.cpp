@@ -1,9 +1,14 @@
 // Environment maps: list, load (upload or data-dir path), metadata, delete, image, distribution.
+#include <fmt/format.h>
+
 #include "api/api_error.hpp"
 #include "api/envmap_load_request.hpp"
 #include "api/envmap_schema.hpp"
 #include "api/preview_params.hpp"
+#include "api/projection_params.hpp"
 #include "engine/image/encode_memory.hpp"
+#include "engine/projection/cube_layout.hpp"
+#include "engine/projection/projection_cache.hpp"
 #include "server/data_dir.hpp"
 #include "server/envmap_loading.hpp"
 #include "server/reserved_content.hpp"
@@ -14,12 +19,16 @@ namespace lp::server {
 namespace {
 
 api::Json metadata(const EnvMapEntry& e) {
-  return api::envmap_metadata({e.id, e.name, e.format, e.source, e.created}, *e.map);
+  return api::envmap_metadata({e.id, e.name, e.format, e.source, e.created, e.source_projection}, *e.map);
 }
 
 InvalidPixelPolicy invalid_pixel_policy(const httplib::Request& req) {
   return *parse_enum<InvalidPixelPolicy>(api::query_enum(
       req.params, "invalid", enum_name(kDefaultInvalidPixelPolicy), enum_names<InvalidPixelPolicy>()));
+}
+
+Projection file_projection(const httplib::Request& req) {
+  return api::parse_input_projection(req.params);
 }
 
 // A JSON body (load by path) must say so; anything else is an image upload.
@@ -34,7 +43,8 @@ bool is_json_body(const httplib::Request& req) {
 std::shared_ptr<const EnvMapEntry> load_from_json(App& app, const httplib::Request& req) {
   const api::EnvMapLoadRequest r = api::parse_envmap_load_request(req.body);
   const auto path = resolve_in_data_dir(app.options, r.path, "path");
-  return register_envmap_file(app, r.name, path, "path:" + r.path, invalid_pixel_policy(req));
+  return register_envmap_file(app, r.name, path, "path:" + r.path, invalid_pixel_policy(req),
+                              file_projection(req));
 }
 
 std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Request& req) {
@@ -43,7 +53,8 @@ std::shared_ptr<const EnvMapEntry> load_from_upload(App& app, const httplib::Req
   if (req.body.empty())
     throw api::ApiError(api::ErrorCode::EmptyBody, "the request body is empty: send an EXR, PFM or HDR file");
   const auto* bytes = reinterpret_cast<const uint8_t*>(req.body.data());
-  return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload", invalid_pixel_policy(req));
+  return register_envmap_bytes(app, *name, {bytes, req.body.size()}, "upload", invalid_pixel_policy(req),
+                               file_projection(req));
 }
 
 void create(App& app, const httplib::Request& req, httplib::Response& res) {
@@ -55,15 +66,40 @@ void create(App& app, const httplib::Request& req, httplib::Response& res) {
   send_json(res, metadata(*entry), 201);
 }
 
+void send_image(const Image& pixels, ImageFormat format, const ToneMap& tone, MemoryReservation memory,
+                httplib::Response& res) {
+  send_reserved(res, write_image(pixels, format, tone), format_mime_type(format), std::move(memory));
+}
+
+// The map in another projection, cached on it; a cross or a single face is copied out of the cube's strip.
+void send_projection(App& app, const EnvMap& map, const api::ProjectionParams& params,
+                     const api::PreviewParams& preview, httplib::Response& res) {
+  const int size = api::projection_image_size(params, map.width(), app.options.limits.max_pixels);
+  const bool copied = params.projection == Projection::Cross || params.face;
+  const ImageShape shape = params.face ? ImageShape{size, size} : projection_shape(params.projection, size);
+  auto memory = app.memory.reserve(
+      (copied ? EnvMap::image_bytes(shape.width, shape.height) : 0) +
+          encode_bytes(preview.format, shape.width, shape.height),
+      MemoryUse::Transient,
+      fmt::format("encoding a {} of the map as {}", enum_name(params.projection), enum_name(preview.format)));
+  const auto strip_or_square = projection_cached(map, params.projection, size);
+  if (!copied) return send_image(*strip_or_square, preview.format, preview.tone, std::move(memory), res);
+  const Image image = params.face ? cube_strip_face(*strip_or_square, int(*params.face))
+                                  : cube_relayout(*strip_or_square, Projection::Cube, Projection::Cross);
+  send_image(image, preview.format, preview.tone, std::move(memory), res);
+}
+
 void image(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
   const auto preview = api::parse_preview_params(req.params);
+  const auto projection = api::parse_projection_params(req.params);
+  if (projection.projection != Projection::LatLong)
+    return send_projection(app, *entry->map, projection, preview, res);
   const Image& pixels = entry->map->image();
   auto memory =
       app.memory.reserve(encode_bytes(preview.format, pixels.width(), pixels.height()), MemoryUse::Transient,
                          std::string("encoding a map as ") + enum_name(preview.format));
-  send_reserved(res, write_image(pixels, preview.format, preview.tone), format_mime_type(preview.format),
-                std::move(memory));
+  send_image(pixels, preview.format, preview.tone, std::move(memory), res);
 }
 
 void distribution(App& app, const httplib::Request& req, httplib::Response& res) {

@@ -23,6 +23,13 @@ std::string upload_file_name(const std::string& name, const std::string& format)
   return name + "." + format;
 }
 
+// The layout the file was loaded in (records written before projections have none: lat-long).
+Projection record_projection(const nlohmann::json& record) {
+  const auto projection = parse_enum<Projection>(record.value("projection", enum_name(Projection::LatLong)));
+  if (!projection) throw std::invalid_argument("unknown projection");
+  return *projection;
+}
+
 void restore_map(App& app, const nlohmann::json& record) {
   if (record.at("version").get<int>() != kRecordVersion)
     throw std::invalid_argument("unknown record version");
@@ -32,11 +39,12 @@ void restore_map(App& app, const nlohmann::json& record) {
   if (!valid_resource_name(name)) throw std::invalid_argument("not a map name: '" + name + "'");
   if (source.rfind(kPathSource, 0) == 0) {
     const auto path = resolve_in_data_dir(app.options, source.substr(kPathSource.size()), "path");
-    register_envmap_file(app, name, path, source);
+    register_envmap_file(app, name, path, source, kDefaultInvalidPixelPolicy, record_projection(record));
   } else {
     if (file != upload_file_name(name, record.at("format").get<std::string>()))
       throw std::invalid_argument("the file name is not the map's");
-    register_envmap_file(app, name, app.state->maps_dir() / file, source);
+    register_envmap_file(app, name, app.state->maps_dir() / file, source, kDefaultInvalidPixelPolicy,
+                         record_projection(record));
   }
 }
 
@@ -50,11 +58,13 @@ void keep_map(App& app, const std::shared_ptr<const EnvMapEntry>& entry, std::sp
   const std::string file = uploaded.empty() ? "" : upload_file_name(entry->name, entry->format);
   try {
     if (!file.empty()) store.write_bytes(store.maps_dir() / file, uploaded);
-    store.write_record(record_path(store, entry->name), {{"version", kRecordVersion},
-                                                         {"name", entry->name},
-                                                         {"format", entry->format},
-                                                         {"source", entry->source},
-                                                         {"file", file}});
+    store.write_record(record_path(store, entry->name),
+                       {{"version", kRecordVersion},
+                        {"name", entry->name},
+                        {"format", entry->format},
+                        {"source", entry->source},
+                        {"file", file},
+                        {"projection", enum_name(entry->source_projection)}});
   } catch (const std::exception& e) {
     spdlog::error("map '{}' is loaded but will not survive a restart: {}", entry->name, e.what());
   }

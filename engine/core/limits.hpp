@@ -85,6 +85,9 @@ inline constexpr Range<int> kPrefilterSamples{16, 16384};
 inline constexpr Range<double> kSunThreshold{0.001, 1.0};
 inline constexpr Range<double> kSunMaxRadiusDeg{0.05, 30.0};
 inline constexpr Range<double> kSunMinShare{0.0, 1.0};
+// Projections of a map (engine/projection): the face size of a cube or cross, the side of an octahedral or
+// equal-area square. The answer's pixels are bounded by the largest map (--max-pixels) too.
+inline constexpr Range<int64_t> kProjectionSize{2, 8192};
 
 }  // namespace limits
 }  // namespace lp

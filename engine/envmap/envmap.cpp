@@ -4,6 +4,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
+
 #include "engine/core/error.hpp"
 #include "engine/envmap/envmap_sampler.hpp"
 
@@ -35,10 +37,14 @@ Rgb EnvMap::power_of(const Image& image) {
   return {float(total.r), float(total.g), float(total.b)};
 }
 
-EnvMap::EnvMap(Image image, InvalidPixelPolicy policy)
+EnvMap::EnvMap(Image image, InvalidPixelPolicy policy, const InvalidPixelReport& fixed_before)
     : image_(std::move(image)), cache_(std::make_shared<Cache>()) {
   if (image_.empty()) throw Error(ErrorKind::InvalidData, "environment map is empty");
   invalid_pixels_ = sanitize_radiance(image_, policy);
+  invalid_pixels_.clamped_negative_values += fixed_before.clamped_negative_values;
+  invalid_pixels_.non_finite_pixels += fixed_before.non_finite_pixels;
+  invalid_pixels_.most_negative_value =
+      std::min(invalid_pixels_.most_negative_value, fixed_before.most_negative_value);
   power_ = power_of(image_);
 }
 

@@ -21,8 +21,10 @@ class EnvMapSampler;
 class EnvMap {
  public:
   // Applies the invalid-pixel policy (see invalid_pixels.hpp); every derived quantity uses the result.
-  // Throws lp::Error(InvalidData) for an empty map or, under Reject, a bad pixel.
-  explicit EnvMap(Image image, InvalidPixelPolicy policy = kDefaultInvalidPixelPolicy);
+  // Throws lp::Error(InvalidData) for an empty map or, under Reject, a bad pixel. `fixed_before` is what
+  // the policy changed in the file an image was converted from (engine/projection), added to the report.
+  explicit EnvMap(Image image, InvalidPixelPolicy policy = kDefaultInvalidPixelPolicy,
+                  const InvalidPixelReport& fixed_before = {});
 
   const Image& image() const { return image_; }
   int width() const { return image_.width(); }

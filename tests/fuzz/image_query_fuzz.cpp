@@ -1,9 +1,10 @@
 // The query parameters of the image endpoints: samples.png, median-cut.png, sh and sh.png, brdf-lut, and the
-// map and render images (format, exposure, gamma). One query goes to every parser. fuzz-dictionary:
-// query.dict
+// map and render images (format, exposure, gamma; projection, size and face, and the size they give). One
+// query goes to every parser. fuzz-dictionary: query.dict
 #include "api/brdf_lut_request.hpp"
 #include "api/median_cut_request.hpp"
 #include "api/preview_params.hpp"
+#include "api/projection_params.hpp"
 #include "api/sample_request.hpp"
 #include "api/sh_request.hpp"
 #include "fuzz_input.hpp"
@@ -30,5 +31,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   parse([&] { lp::api::parse_sh_image_query(q); });
   parse([&] { lp::api::parse_brdf_lut_query(q); });
   parse([&] { lp::api::parse_preview_params(q); });
+  parse([&] {
+    const lp::api::ProjectionParams p = lp::api::parse_projection_params(q);
+    lp::api::projection_image_size(p, 1024, limits.max_pixels);
+  });
+  parse([&] { lp::api::parse_input_projection(q); });
   return 0;
 }

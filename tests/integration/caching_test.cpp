@@ -100,6 +100,7 @@ TEST(Caching, EveryPureResultRoute) {
       {"/api/v1/envmaps/default/samples.png?count=16", "no-cache"},
       {"/api/v1/envmaps/default/median-cut.png?count=4", "no-cache"},
       {"/api/v1/envmaps/default/sh.png?width=64", "no-cache"},
+      {"/api/v1/envmaps/default/image?projection=cube&size=8&format=exr", "no-cache"},
       {"/api/v1/renders/" + id + "/image", "no-cache"},
       {prefilter.header("Location") + "/files/prefiltered.ktx2", "no-cache"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5", "max-age=3600"},

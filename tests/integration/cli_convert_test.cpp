@@ -1,11 +1,14 @@
 // `lightprobe convert IN OUT`, the real tool on committed maps: float formats round-trip exactly, PNG is
-// tone mapped with the API's exposure and gamma, and bad files or names fail cleanly.
+// tone mapped with the API's exposure and gamma, maps change projection and back keeping their power, and
+// bad files, names and projections fail cleanly with the API's errors.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
+#include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/projection/projection_texels.hpp"
 #include "support/cli_run.hpp"
 #include "support/png_pixels.hpp"
 #include "support/temp_dir.hpp"
@@ -98,6 +101,80 @@ TEST(CliConvert, BadInputFailsCleanlyAndLeavesNoFile) {
   EXPECT_EQ(unwritable.exit_status, 1);
   EXPECT_EQ(unwritable.err.rfind("error: write_failed: cannot create 'no/such/folder/out.exr", 0), 0u)
       << unwritable.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+double relative_error(Rgb a, Rgb b) {
+  double worst = 0;
+  for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(a[c]) - b[c]) / double(b[c]));
+  return worst;
+}
+
+// Lat-long -> cross -> lat-long, and lat-long -> equal-area -> octahedral -> lat-long, on the real tool: the
+// shapes the help states and the map's power at every step.
+TEST(CliConvert, ProjectionsAndBackKeepThePower) {
+  const test::TempDir dir;
+  const auto source = test::envmap_path("city.exr");  // 256 x 128
+  const Rgb power = EnvMap::power_of(read_image_file(source).image);
+  const auto convert = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "convert");
+    const test::CliRun run = test::run_cli(args, dir.path());
+    EXPECT_EQ(run.exit_status, 0) << run.err;
+  };
+  convert({source.string(), "cross.exr", "--projection", "cross"});
+  const Image cross = read_image_file(dir.path() / "cross.exr").image;
+  EXPECT_EQ(cross.width(), 256);
+  EXPECT_EQ(cross.height(), 192);
+  EXPECT_LT(relative_error(projected_power(cross, Projection::Cross), power), 1e-4);
+  convert({"cross.exr", "back.pfm", "--input-projection", "cross"});
+  const Image back = read_image_file(dir.path() / "back.pfm").image;
+  EXPECT_EQ(back.width(), 256);
+  EXPECT_EQ(back.height(), 128);
+  EXPECT_LT(relative_error(EnvMap::power_of(back), power), 1e-4);
+
+  convert({source.string(), "ea.exr", "--projection", "equal-area", "--size", "96"});
+  convert({"ea.exr", "oct.exr", "--input-projection", "equal-area", "--projection", "octahedral"});
+  const Image oct = read_image_file(dir.path() / "oct.exr").image;
+  EXPECT_EQ(oct.width(), 96);
+  EXPECT_LT(relative_error(projected_power(oct, Projection::Octahedral), power), 1e-4);
+  convert({"oct.exr", "oct_back.exr", "--input-projection", "octahedral"});
+  EXPECT_EQ(read_image_file(dir.path() / "oct_back.exr").image.width(), 192);
+
+  convert({source.string(), "py.pfm", "--projection", "cube", "--face", "py", "--size", "16"});
+  const Image py = read_image_file(dir.path() / "py.pfm").image;
+  EXPECT_EQ(py.width(), 16);
+  EXPECT_EQ(py.height(), 16);
+}
+
+TEST(CliConvert, BadProjectionsFailWithTheApisErrors) {
+  const test::TempDir dir;
+  const std::string source = test::envmap_path("forest.exr").string();  // 256 x 128
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--projection", "mercator"},
+       "invalid_field: field 'projection': 'mercator' is not one of: latlong, cube, cross, octahedral, "
+       "equal-area"},
+      {{"--input-projection", "cross"},
+       "invalid_field: field 'input_projection': the image must be 4:3 (4N x 3N pixels) for projection "
+       "cross, got "
+       "256 x 128"},
+      {{"--input-projection", "equal-area"},
+       "invalid_field: field 'input_projection': the image must be square (N x N pixels) for projection "
+       "equal-area, got 256 x 128"},
+      {{"--size", "64"},
+       "invalid_field: field 'size': applies to the projections cube, cross, octahedral and equal-area; "
+       "latlong "
+       "is the map as it is held"},
+      {{"--projection", "cube", "--size", "1"}, "invalid_field: field 'size': must be in [2, 8192], got 1"},
+      {{"--projection", "cross", "--face", "px"},
+       "invalid_field: field 'face': applies to projection=cube only"},
+  };
+  for (const auto& [options, message] : cases) {
+    std::vector<std::string> args = {"convert", source, "out.exr"};
+    args.insert(args.end(), options.begin(), options.end());
+    const test::CliRun run = test::run_cli(args, dir.path());
+    EXPECT_EQ(run.exit_status, 2) << message;
+    EXPECT_EQ(run.err, "error: " + message + "\n");
+  }
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 

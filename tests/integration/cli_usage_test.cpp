@@ -41,6 +41,10 @@ TEST(CliUsage, HelpStatesTheApisLimitsAndDefaults) {
   const std::string median_cut = test::run_cli({"median-cut", "--help"}).out;
   EXPECT_NE(median_cut.find("lights, in [1, 65536] (default 64)"), std::string::npos) << median_cut;
   EXPECT_NE(median_cut.find("json, csv, pbrt, mitsuba (default json)"), std::string::npos);
+  const std::string convert = test::run_cli({"convert", "--help"}).out;
+  EXPECT_NE(convert.find("latlong, cube, cross, octahedral, equal-area (default latlong)"), std::string::npos)
+      << convert;
+  EXPECT_NE(convert.find("[2, 8192]"), std::string::npos) << convert;
 }
 
 TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {

@@ -110,7 +110,9 @@ TEST(QueryPolicy, EveryDocumentedParameterIsAccepted) {
 TEST(QueryPolicy, StatedMessages) {
   Reply r = send("GET", "/api/v1/envmaps/default/image?width=256");
   EXPECT_EQ(r.status, 400);
-  EXPECT_EQ(error_message(r), "field 'width': unknown parameter (expected one of: format, exposure, gamma)");
+  EXPECT_EQ(
+      error_message(r),
+      "field 'width': unknown parameter (expected one of: projection, size, face, format, exposure, gamma)");
   r = send("GET", "/api/v1/envmaps/default/image?format=png&format=exr");
   EXPECT_EQ(r.status, 400);
   EXPECT_EQ(error_message(r), "field 'format': given more than once");
