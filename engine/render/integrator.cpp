@@ -31,6 +31,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
   Ray ray = camera_ray;
   bool delta_chain = true, last_delta = true;
   float bsdf_pdf = 0, eta_scale = 1;
+  float sun_choice = 0;  // at the last hit, the probability that its light sample went to the sun
   const bool lit_by_map =
       config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
   EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
@@ -40,8 +41,8 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     const std::optional<SurfaceHit> hit = scene_.intersect(ray);
     if (!hit) {
       if (depth == 0) escape = env_.locate(ray.direction);
-      result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf);
-      if (sun_) result += beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf);
+      result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf, 1 - sun_choice);
+      if (sun_) result += beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf, sun_choice);
       break;
     }
     cone.advance(hit->t);
@@ -56,12 +57,9 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
     const Point2 u_choice = sampler.get_2d();  // x: which light, y: which BSDF lobe
     const Point2 u_bsdf = sampler.get_2d();
     const float u_roulette = sampler.get_1d();
-    const Point2 u_sun = sun_ ? sampler.get_2d() : Point2{};  // drawn last: renders without a sun keep theirs
 
-    if (bsdf.has_non_delta_lobe()) {
-      result += beta * direct(shading, u_light, u_choice.x, rays);
-      if (sun_) result += beta * direct_env(shading, sun_->sample(u_sun), sun_->pdf(), rays);
-    }
+    sun_choice = sun_ ? sun_->selection(shading.frame.n) : 0;
+    if (bsdf.has_non_delta_lobe()) result += beta * direct(shading, u_light, u_choice.x, sun_choice, rays);
 
     const std::optional<BsdfSample> s = bsdf.sample(shading.wo, u_choice.y, u_bsdf);
     if (!s || is_black(s->weight)) break;
@@ -105,7 +103,7 @@ Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayC
 }
 
 Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
-                        float bsdf_pdf) const {
+                        float bsdf_pdf, float env_choice) const {
   // A camera ray or a ray leaving a delta lobe takes no part in MIS: it sees the map over its
   // footprint. Every other ray reads the importance grid, as the light samples it is weighed against do.
   const Rgb seen = last_delta
@@ -116,7 +114,7 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
     case LightingMode::Bsdf:
       return seen;
     case LightingMode::EnvMap:
-      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, env_.importance_pdf(pixel));
+      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, env_choice * env_.importance_pdf(pixel));
     case LightingMode::Uniform:
       return last_delta ? seen : seen * power_heuristic(bsdf_pdf, kUniformSpherePdf);
     case LightingMode::MedianCut:
@@ -126,17 +124,19 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
   return {};
 }
 
-Rgb Integrator::escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf) const {
+Rgb Integrator::escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const {
   if (!sun_->contains(direction)) return {};
   if (depth == 0) return config_.env_visible ? sun_->radiance() : Rgb{};
-  return last_delta ? sun_->radiance() : sun_->radiance() * power_heuristic(bsdf_pdf, sun_->pdf());
+  return last_delta ? sun_->radiance() : sun_->radiance() * power_heuristic(bsdf_pdf, choice * sun_->pdf());
 }
 
-Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const {
+Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, float sun_choice,
+                       uint64_t& rays) const {
   switch (config_.mode) {
     case LightingMode::EnvMap: {
+      if (u_select < sun_choice) return direct_env(s, sun_->sample(u_light), sun_choice * sun_->pdf(), rays);
       const LightSample light = env_.sample_importance(u_light);
-      return direct_env(s, light, light.pdf, rays);
+      return direct_env(s, light, (1 - sun_choice) * light.pdf, rays);
     }
     case LightingMode::Uniform:
       return direct_env(s, env_.sample_uniform(u_light), kUniformSpherePdf, rays);

@@ -62,11 +62,14 @@ class Integrator {
   static bool same_side(const Shading& s, Vec3 direction) {
     return !s.bsdf.two_sided() || dot(direction, s.geometric) > 0;
   }
+  // `env_choice`: the probability that the last hit's light sample went to the map.
   Rgb escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
-              float bsdf_pdf) const;
+              float bsdf_pdf, float env_choice) const;
   // The sun seen along an escaping ray, weighed as escaped() weighs the map.
-  Rgb escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf) const;
-  Rgb direct(const Shading& s, Point2 u_light, float u_select, uint64_t& rays) const;
+  // `choice`: the probability that the last hit's light sample went to the sun.
+  Rgb escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const;
+  // `u_select` picks a median-cut light, or the sun (with probability `sun_choice`) over the map.
+  Rgb direct(const Shading& s, Point2 u_light, float u_select, float sun_choice, uint64_t& rays) const;
   Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;
   Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const;
   bool visible(const SurfaceHit& hit, Vec3 direction, uint64_t& rays) const;

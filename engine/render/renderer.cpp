@@ -63,7 +63,8 @@ struct Renderer::Impl {
         bsdfs(make_bsdfs(scene)),
         split(split_sun(std::move(envmap), lighting)),
         env(split.environment, lighting),
-        sun(split.sun ? std::optional<SunLight>(SunLight(*split.sun, env)) : std::nullopt),
+        sun(split.sun ? std::optional<SunLight>(SunLight(*split.sun, env, *split.environment))
+                      : std::nullopt),
         lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights)
                                           : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),

@@ -39,7 +39,7 @@ TEST(RenderSun, TheConeIsSampledUniformlyWithItsPdf) {
   l.rotation_deg = 30;
   l.intensity = 2;
   const EnvLight env(e.residual, l);
-  const SunLight sun(*e.sun, env);
+  const SunLight sun(*e.sun, env, *e.residual);
   const double omega = cone_solid_angle(e.sun->angular_radius);
   EXPECT_NEAR(sun.pdf() * omega, 1.0, 1e-6);
   EXPECT_NEAR(sun.radiance().x * omega, 2 * e.sun->power[0], 1e-5 * e.sun->power[0]);
@@ -69,6 +69,21 @@ TEST(RenderSun, TheConeIsSampledUniformlyWithItsPdf) {
   const Vec3 outside = normalize(axis + frame.s * float(1.05 * std::tan(e.sun->angular_radius)));
   EXPECT_FALSE(sun.contains(outside));
   EXPECT_TRUE(sun.contains(normalize(axis + frame.s * float(0.95 * std::tan(e.sun->angular_radius)))));
+}
+
+TEST(RenderSun, LightSamplesGoToTheSunWhereItLightsTheSurface) {
+  const auto map = sunny_map(4);
+  const SunExtraction e = extract_sun(*map, SunParams{});
+  ASSERT_TRUE(e.sun) << e.reason;
+  Lighting l = envmap_lighting(SunMode::Extract);
+  l.rotation_deg = 30;
+  const EnvLight env(e.residual, l);
+  const SunLight sun(*e.sun, env, *e.residual);
+  const Vec3 axis = normalize(env.to_world(e.sun->direction));
+  EXPECT_GT(sun.selection(axis), 0.5f);          // the sun holds most of the map's power
+  EXPECT_FLOAT_EQ(sun.selection(-axis), 0.05f);  // the least: facing away, the sun gives nothing
+  const Vec3 side = Frame::from_normal(axis).s;
+  EXPECT_LT(sun.selection(side), sun.selection(axis));
 }
 
 double image_mean(const Image& image) {
