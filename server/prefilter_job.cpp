@@ -31,7 +31,7 @@ bool PrefilterJob::run() {
                envmap_name_, p.levels, p.base_size, p.samples);
   const PrefilterControl control{[this] { return cancel_flag().load() || interrupt_requested(); },
                                  [this](int64_t units) { add_work_done(units); }};
-  auto chain = prefilter_latlong(*envmap_, p, control);
+  auto chain = prefilter_chain(*envmap_, p, control);
   spdlog::info("prefilter {} {} after {:.2f} s", id(), chain ? "done" : "stopped", elapsed_s());
   if (!chain) return false;
   std::lock_guard lock(mutex_);

@@ -1,12 +1,13 @@
 // Prefiltered specular chains on the real server: a job from POST to done with its progress, the files
-// read back (KTX2 and EXR) against analytic values, a long job cancelled while it runs, a file asked of
-// a job still queued, and bad input.
+// read back (KTX2, a KTX2 cube map, EXR in every projection) against analytic values, a long job
+// cancelled while it runs, a file asked of a job still queued, and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
@@ -89,6 +90,60 @@ TEST(PrefilterApi, AWhiteMapIsOneAtEveryLevelOfTheKtx2File) {
   EXPECT_EQ(t.metadata.at("lightprobe.roughness"), st["convention"]["roughness"]);
 }
 
+TEST(PrefilterApi, ACubeIsAKtx2CubeMapOfSixFacesAtEveryLevel) {
+  const json st = finished(white(), R"({"levels":4,"base_size":32,"samples":64,"projection":"cube"})");
+  ASSERT_EQ(st["status"], "done") << st;
+  EXPECT_EQ(st["projection"], "cube");
+  EXPECT_EQ(st["level_info"][1]["size"], 16);
+  EXPECT_EQ(st["level_info"][1]["width"], 6 * 16);
+  EXPECT_EQ(st["level_info"][1]["height"], 16);
+  const std::string faces = st["convention"]["cube_faces"];
+  EXPECT_NE(faces.find("+X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << faces;
+  const Reply file = get(st["files"][0]["url"]);
+  ASSERT_EQ(file.status, 200) << file.body;
+  EXPECT_EQ(file.type(), "image/ktx2");
+  const Ktx2Texture t = read_ktx2(bytes_of(file), {});
+  EXPECT_EQ(t.faces, 6u);
+  ASSERT_EQ(t.levels.size(), 4u);
+  for (size_t i = 0; i < t.levels.size(); ++i) {
+    EXPECT_EQ(t.levels[i].width(), 32 >> i);
+    EXPECT_EQ(t.levels[i].height(), 6 * (32 >> i));
+    expect_all_near(t.levels[i], 1.0f, 1e-3f);
+  }
+  EXPECT_EQ(t.metadata.at("lightprobe.cube_faces"), faces);
+  EXPECT_EQ(t.metadata.at("lightprobe.projection"), st["convention"]["projection"]);
+}
+
+// One EXR a level, of the projection's shape: a white map is 1 on every texel that looks somewhere (a
+// cross's six empty cells are 0). Float precision: 1 to float rounding.
+TEST(PrefilterApi, EveryProjectionHasItsShapeAndIsOneForAWhiteMap) {
+  const std::vector<std::tuple<std::string, int, int>> shapes = {{"latlong", 16, 8},
+                                                                 {"cube", 6 * 16, 16},
+                                                                 {"cross", 4 * 16, 3 * 16},
+                                                                 {"octahedral", 16, 16},
+                                                                 {"equal-area", 16, 16}};
+  for (const auto& [projection, width, height] : shapes) {
+    SCOPED_TRACE(projection);
+    const json st =
+        finished(white(), R"({"levels":3,"base_size":16,"samples":32,"format":"exr","precision":"float",
+                                           "projection":")" +
+                              projection + "\"}");
+    ASSERT_EQ(st["status"], "done") << st;
+    ASSERT_EQ(st["files"].size(), 3u);
+    for (int level = 0; level < 3; ++level) {
+      const Reply r = get(st["files"][size_t(level)]["url"]);
+      ASSERT_EQ(r.status, 200);
+      const Image image = read_exr(bytes_of(r), {});
+      ASSERT_EQ(image.width(), width >> level);
+      ASSERT_EQ(image.height(), height >> level);
+      float lo = 1, hi = 0;
+      for (const float v : image.data()) lo = std::min(lo, v), hi = std::max(hi, v);
+      EXPECT_NEAR(hi, 1.0f, 1e-4f);
+      EXPECT_NEAR(lo, projection == "cross" ? 0.0f : 1.0f, 1e-4f);
+    }
+  }
+}
+
 TEST(PrefilterApi, ExrLevelsOfARealMapKeepItsPowerAtLevelZero) {
   const json st = finished("forest_exr", R"({"levels":4,"base_size":128,"samples":64,"format":"exr",
                                               "precision":"float"})");
@@ -155,6 +210,8 @@ TEST(PrefilterApi, BadInputIsA400NamingTheField) {
       {R"({"samples":"many"})", "'samples'"},
       {R"({"format":"png"})", "'format'"},
       {R"({"precision":"double"})", "'precision'"},
+      {R"({"projection":"mirror-ball"})", "'projection'"},
+      {R"({"projection":"cross","base_size":40,"levels":5})", "'base_size'"},
       {R"({"roughness":1})", "'roughness'"},
   };
   for (const auto& [body, field] : cases) {
