@@ -226,6 +226,22 @@ TEST(Ktx2, ACubeMapHasSixFacesAfterEachOtherInEveryLevel) {
   EXPECT_EQ(read_ktx2(write_ktx2(chain(4, 2, 1), PixelPrecision::Half), {}).faces, 1u);
 }
 
+// A cube map of the fuzz corpus written by a short Python script following the specification: face f of
+// level p holds the values of cube_chain.
+TEST(Ktx2, ReadsACubeMapOfAnotherWriter) {
+  const Ktx2Texture t =
+      read_ktx2(test::read_bytes(test::fuzz_corpus_path("ktx2", "cube_half_4x4_3_levels.ktx2")), {});
+  EXPECT_EQ(t.faces, 6u);
+  const auto want = cube_chain(4, 3);
+  ASSERT_EQ(t.levels.size(), want.size());
+  for (size_t p = 0; p < want.size(); ++p) {
+    ASSERT_EQ(t.levels[p].width(), want[p].width());
+    ASSERT_EQ(t.levels[p].height(), want[p].height());
+    for (size_t i = 0; i < want[p].data().size(); ++i)
+      EXPECT_NEAR(t.levels[p].data()[i], want[p].data()[i], std::abs(want[p].data()[i]) * 0x1p-10f);
+  }
+}
+
 TEST(Ktx2, CubeMapsAreSquareFacesInAMipChain) {
   EXPECT_THROW(write_ktx2_cube(chain(8, 8, 1), PixelPrecision::Half), Error);  // not six faces
   auto levels = cube_chain(8, 2);
