@@ -1,6 +1,7 @@
 // Prefiltered specular chains on the real server: a job from POST to done with its progress, the files
 // read back (KTX2, a KTX2 cube map, EXR in every projection) against analytic values, a long job
-// cancelled while it runs, a file asked of a job still queued, and bad input.
+// cancelled while it runs, a file asked of a job still queued, a chain reused for the same map content
+// and parameters (and not after a cancel or a removal), and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -200,6 +201,83 @@ TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
   for (const json& job : list["prefilters"])
     listed = listed || queued_url.ends_with(job["id"].get<std::string>());
   EXPECT_TRUE(listed);
+}
+
+// Number of jobs the server holds.
+size_t job_count() {
+  return get("/api/v1/prefilters").body_json()["prefilters"].size();
+}
+
+TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
+  const std::string body = R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral"})";
+  const Reply first = submit(white(), body);
+  ASSERT_EQ(first.status, 202) << first.body;
+  EXPECT_EQ(first.body_json()["reused"], false);
+  const std::string url = first.header("Location");
+  const json done = test::finished_job(client(), url);
+  ASSERT_EQ(done["status"], "done");
+
+  // The same pixels under another id, the same parameters given explicitly: the same job, done.
+  const Reply again_upload = test::upload_white_map(client(), "prefilter_white_again");
+  ASSERT_TRUE(again_upload.status == 201 || again_upload.status == 409);
+  const size_t jobs = job_count();
+  const Reply again = submit("prefilter_white_again", R"({"levels":3,"base_size":16,"samples":48,
+      "projection":"octahedral","format":"ktx2","precision":"half"})");
+  EXPECT_EQ(again.status, 200) << again.body;
+  EXPECT_EQ(again.header("Location"), url);
+  EXPECT_EQ(again.body_json()["reused"], true);
+  EXPECT_EQ(again.body_json()["id"], first.body_json()["id"]);
+  EXPECT_EQ(again.body_json()["status"], "done");
+  EXPECT_EQ(again.body_json()["elapsed_s"], done["elapsed_s"]);  // not run again
+  EXPECT_EQ(job_count(), jobs);
+  EXPECT_FALSE(get(url).body_json().contains("reused"));  // the answer of the POST alone says it
+
+  // Any parameter other, or another map: a new job.
+  const std::vector<std::string> others = {
+      R"({"levels":2,"base_size":16,"samples":48,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":32,"samples":48,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":16,"samples":64,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"equal-area"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","format":"exr"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","precision":"float"})"};
+  for (const std::string& other : others) {
+    const Reply r = submit(white(), other);
+    EXPECT_EQ(r.status, 202) << other;
+    EXPECT_EQ(r.body_json()["reused"], false) << other;
+    EXPECT_EQ(test::finished_job(client(), r.header("Location"))["status"], "done");
+  }
+  const Reply forest = submit("forest_exr", body);
+  EXPECT_EQ(forest.status, 202);
+  EXPECT_EQ(test::finished_job(client(), forest.header("Location"))["status"], "done");
+
+  // Removed with DELETE: made again.
+  EXPECT_EQ(del(url).status, 204);
+  const Reply after_delete = submit(white(), body);
+  EXPECT_EQ(after_delete.status, 202);
+  EXPECT_NE(after_delete.header("Location"), url);
+  EXPECT_EQ(test::finished_job(client(), after_delete.header("Location"))["status"], "done");
+}
+
+TEST(PrefilterApi, ARunningJobIsReusedUntilItIsCancelled) {
+  const std::string body = R"({"levels":11,"base_size":2048,"samples":16000,"projection":"equal-area"})";
+  const Reply first = submit("forest_exr", body);
+  ASSERT_EQ(first.status, 202) << first.body;
+  const std::string url = first.header("Location");
+  const Reply again = submit("forest_exr", body);
+  EXPECT_EQ(again.status, 200);
+  EXPECT_EQ(again.header("Location"), url);
+  EXPECT_EQ(again.body_json()["reused"], true);
+  EXPECT_NE(again.body_json()["status"], "done");
+  EXPECT_EQ(del(url).status, 202);
+  // Cancelled (or cancelling): not reused.
+  const Reply after_cancel = submit("forest_exr", body);
+  EXPECT_EQ(after_cancel.status, 202);
+  EXPECT_NE(after_cancel.header("Location"), url);
+  EXPECT_EQ(del(after_cancel.header("Location")).status, 202);
+  EXPECT_EQ(test::finished_job(client(), url)["status"], "cancelled");
+  EXPECT_EQ(test::finished_job(client(), after_cancel.header("Location"))["status"], "cancelled");
+  EXPECT_EQ(del(url).status, 204);
+  EXPECT_EQ(del(after_cancel.header("Location")).status, 204);
 }
 
 TEST(PrefilterApi, BadInputIsA400NamingTheField) {
