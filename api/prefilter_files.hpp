@@ -10,13 +10,14 @@
 
 namespace lp::api {
 
-// "level0.exr", "level1.exr", ... (format exr) or "prefiltered.ktx2" (format ktx2).
+// "level0.exr", "level1.exr", ... (format exr: a cube's level is the strip of its faces) or
+// "prefiltered.ktx2" (format ktx2: a cube map for the cube projection, a 2D texture for the others).
 std::vector<std::string> prefilter_file_names(const PrefilterRequest& request);
 const char* prefilter_file_mime_type(PrefilterFormat format);
 
 // How to read a chain: (name, text) pairs, in the status JSON's "convention" and, as "lightprobe.NAME",
-// in a KTX2 file's metadata.
-std::vector<std::pair<std::string, std::string>> prefilter_conventions();
+// in a KTX2 file's metadata. The cube and the cross add "cube_faces".
+std::vector<std::pair<std::string, std::string>> prefilter_conventions(const PrefilterRequest& request);
 
 // The bytes encoding the file `name` takes at most (its encoder's buffers included); 404 for a name
 // that is not one of the chain's files.

@@ -15,12 +15,13 @@ int json_in(const Json& j, const char* name, int fallback, const Range<T>& range
 
 PrefilterRequest parse_prefilter_request(const std::string& body) {
   const Json j = parse_json_object_or_empty(body);
-  reject_unknown_fields(j, {"levels", "base_size", "samples", "format", "precision"});
+  reject_unknown_fields(j, {"levels", "base_size", "samples", "projection", "format", "precision"});
   PrefilterRequest r;
   PrefilterParams& p = r.params;
   p.levels = json_in(j, "levels", p.levels, limits::kPrefilterLevels);
   p.base_size = json_in(j, "base_size", p.base_size, limits::kPrefilterBaseSize);
   p.samples = json_in(j, "samples", p.samples, limits::kPrefilterSamples);
+  p.projection = json_enum(j, "projection", p.projection);
   r.format = json_enum(j, "format", r.format);
   r.precision = json_enum(j, "precision", r.precision);
   as_invalid_field([&] { p.validate(); });

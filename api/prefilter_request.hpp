@@ -8,7 +8,8 @@
 
 namespace lp::api {
 
-// One EXR file per level, or the whole chain as one KTX2 texture with its mip levels.
+// One EXR file per level, or the whole chain as one KTX2 texture with its mip levels (a cube map for the
+// cube projection).
 enum class PrefilterFormat { Exr, Ktx2 };
 constexpr auto enum_entries(PrefilterFormat) {
   return std::to_array<EnumEntry<PrefilterFormat>>(
@@ -19,11 +20,12 @@ struct PrefilterRequest {
   PrefilterParams params;
   PrefilterFormat format = PrefilterFormat::Ktx2;
   PixelPrecision precision = PixelPrecision::Half;
+  bool operator==(const PrefilterRequest&) const = default;
 };
 
-// {"levels":6,"base_size":256,"samples":1024,"format":"ktx2","precision":"half"}, every field optional
-// (defaults shown); an empty body means all defaults. Ranges from engine/core/limits.hpp (kPrefilter*),
-// and levels at most log2(base_size).
+// {"levels":6,"base_size":256,"samples":1024,"projection":"latlong","format":"ktx2","precision":"half"},
+// every field optional (defaults shown); an empty body means all defaults. Ranges from
+// engine/core/limits.hpp (kPrefilter*), and the rest of PrefilterParams::validate.
 PrefilterRequest parse_prefilter_request(const std::string& body);
 
 }  // namespace lp::api

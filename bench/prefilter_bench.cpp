@@ -32,7 +32,7 @@ PrefilterParams params(int samples) {
 void BM_PrefilterChain(benchmark::State& state) {
   const EnvMap& map = forest(int(state.range(0)));
   const PrefilterParams p = params(int(state.range(1)));
-  for (auto _ : state) benchmark::DoNotOptimize(prefilter_latlong(map, p)->levels.data());
+  for (auto _ : state) benchmark::DoNotOptimize(prefilter_chain(map, p)->levels.data());
   state.counters["source_width"] = double(PrefilterSource::width_for(map.width(), p));
   state.SetItemsProcessed(state.iterations() * prefilter_work_units(p));
 }

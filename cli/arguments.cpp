@@ -71,6 +71,12 @@ void Arguments::expect_positional(size_t count, std::string_view synopsis) const
     throw usage_error("usage: lightprobe " + std::string(synopsis) + " (see --help)");
 }
 
+std::string Arguments::take_required(std::string_view name, std::string_view synopsis) {
+  auto value = take(name);
+  if (!value) throw usage_error("usage: lightprobe " + std::string(synopsis) + " (see --help)");
+  return std::move(*value);
+}
+
 bool Arguments::has(std::string_view name) const {
   return std::any_of(options_.begin(), options_.end(), [&](const auto& o) { return o.first == name; });
 }

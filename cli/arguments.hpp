@@ -31,6 +31,9 @@ class Arguments {
   bool take_switch(std::string_view name);
   // The option's value, taken out of the arguments; nullopt if it was not given.
   std::optional<std::string> take(std::string_view name);
+  // The value of an option the command cannot do without (taken); bad_request with the command's
+  // synopsis if it was not given.
+  std::string take_required(std::string_view name, std::string_view synopsis);
   // The options named (taken), as an API query.
   api::Query take_query(const std::vector<std::string_view>& names);
   // An enum option, checked as the API checks an enum parameter.

@@ -26,5 +26,6 @@ Command convert_command();
 Command sh_command();
 Command brdf_lut_command();
 Command sun_command();
+Command bake_command();
 
 }  // namespace lp::cli

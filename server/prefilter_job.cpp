@@ -7,9 +7,11 @@
 namespace lp::server {
 
 PrefilterJob::PrefilterJob(std::string id, std::string envmap_name, std::shared_ptr<const EnvMap> envmap,
-                           api::PrefilterRequest request, MemoryReservation memory)
+                           std::string envmap_fingerprint, api::PrefilterRequest request,
+                           MemoryReservation memory)
     : Job(std::move(id)),
       envmap_name_(std::move(envmap_name)),
+      envmap_fingerprint_(std::move(envmap_fingerprint)),
       request_(std::move(request)),
       envmap_(std::move(envmap)),
       memory_(std::move(memory)) {
@@ -19,6 +21,12 @@ PrefilterJob::PrefilterJob(std::string id, std::string envmap_name, std::shared_
 std::shared_ptr<const PrefilteredChain> PrefilterJob::chain() const {
   std::lock_guard lock(mutex_);
   return chain_;
+}
+
+bool PrefilterJob::answers(const std::string& envmap_fingerprint, const api::PrefilterRequest& request) const {
+  if (envmap_fingerprint != envmap_fingerprint_ || !(request == request_) || cancel_requested()) return false;
+  const JobStatus s = status();
+  return s == JobStatus::Queued || s == JobStatus::Running || s == JobStatus::Done;
 }
 
 int64_t PrefilterJob::retained_bytes() const {
@@ -31,7 +39,7 @@ bool PrefilterJob::run() {
                envmap_name_, p.levels, p.base_size, p.samples);
   const PrefilterControl control{[this] { return cancel_flag().load() || interrupt_requested(); },
                                  [this](int64_t units) { add_work_done(units); }};
-  auto chain = prefilter_latlong(*envmap_, p, control);
+  auto chain = prefilter_chain(*envmap_, p, control);
   spdlog::info("prefilter {} {} after {:.2f} s", id(), chain ? "done" : "stopped", elapsed_s());
   if (!chain) return false;
   std::lock_guard lock(mutex_);

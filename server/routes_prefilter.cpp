@@ -1,11 +1,15 @@
-// Prefiltered specular chains as jobs: POST /envmaps/{id}/prefilter queues one; status, cancel / remove,
-// the list, and the files of a finished chain. They run on a job manager of their own (App::prefilters),
-// the same machinery as renders with its own queue.
+// Prefiltered specular chains as jobs: POST /envmaps/{id}/prefilter queues one, or answers with the job
+// that makes or made the same chain of the same map content (200, "reused": true); status, cancel /
+// remove, the list, and the files of a finished chain. They run on a job manager of their own
+// (App::prefilters), the same machinery as renders with its own queue.
+#include <mutex>
+
 #include <fmt/format.h>
 
 #include "api/api_error.hpp"
 #include "api/prefilter_files.hpp"
 #include "api/prefilter_request.hpp"
+#include "server/envmap_fingerprint.hpp"
 #include "server/job_routes.hpp"
 #include "server/prefilter_job.hpp"
 #include "server/reserved_content.hpp"
@@ -24,16 +28,37 @@ std::shared_ptr<PrefilterJob> find_prefilter(const App& app, const std::string& 
   return job;
 }
 
+// The job already making or holding this chain, if any.
+std::shared_ptr<PrefilterJob> same_chain(const App& app, const std::string& fingerprint,
+                                         const api::PrefilterRequest& request) {
+  for (const auto& job : app.prefilters.list()) {
+    auto prefilter = std::dynamic_pointer_cast<PrefilterJob>(job);
+    if (prefilter && prefilter->answers(fingerprint, request)) return prefilter;
+  }
+  return nullptr;
+}
+
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
+  // One submission at a time, so two equal requests never both queue a job.
+  static std::mutex submitting;
   const auto entry = app.envmaps.get(path_param(req, 1));
   auto request = api::parse_prefilter_request(req.body);
+  const std::string fingerprint = envmap_fingerprint(*entry->map);
+  std::lock_guard lock(submitting);
+  if (const auto job = same_chain(app, fingerprint, request)) {
+    auto status = job->status_json();
+    status["reused"] = true;
+    res.set_header("Location", prefilter_url(job->id()));
+    return send_json(res, status);
+  }
   const auto& p = request.params;
   auto memory = app.memory.reserve(
       prefilter_working_bytes(entry->map->width(), entry->map->height(), p), MemoryUse::Transient,
       fmt::format("a prefiltered chain of {} levels from {} texels wide", p.levels, p.base_size));
-  auto job = std::make_shared<PrefilterJob>(app.prefilters.new_id(), entry->name, entry->map,
+  auto job = std::make_shared<PrefilterJob>(app.prefilters.new_id(), entry->name, entry->map, fingerprint,
                                             std::move(request), std::move(memory));
-  const auto status = job->status_json();  // taken before a runner can pick it up: "queued"
+  auto status = job->status_json();  // taken before a runner can pick it up: "queued"
+  status["reused"] = false;
   if (!app.prefilters.submit(job)) return send_queue_full(app.prefilters, "prefilters", res);
   send_accepted(prefilter_url(job->id()), status, res);
 }

@@ -1,5 +1,6 @@
 // OpenEXR through the OpenEXR library, from and to memory: any compression it supports,
 // scanline or tiled, RGB(A) or Y channels.
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -112,18 +113,23 @@ std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression, P
   enable_exr_threads();
   Imf::Header header(image.width(), image.height());
   header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
-  // The library converts the float pixels to the file's channel type as it writes them.
-  const Imf::PixelType type = precision == PixelPrecision::Half ? Imf::HALF : Imf::FLOAT;
+  // An output file takes pixels of its channels' own type (it converts only when reading): half
+  // channels are written from a copy of the pixels in half.
+  const bool half = precision == PixelPrecision::Half;
+  const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(type));
+  std::vector<Imath::half> halves;
+  if (half) halves.assign(image.data().begin(), image.data().end());
   MemoryOStream stream;
   {
     Imf::OutputFile file(stream, header);
     Imf::FrameBuffer fb;
     const char* names[] = {"R", "G", "B"};
-    auto* base = const_cast<float*>(image.data().data());
+    auto* base = half ? reinterpret_cast<char*>(halves.data())
+                      : reinterpret_cast<char*>(const_cast<float*>(image.data().data()));
+    const size_t texel = half ? sizeof(Imath::half) : sizeof(float);
     for (int c = 0; c < 3; ++c)
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base + c), sizeof(float) * 3,
-                                     sizeof(float) * 3 * size_t(image.width())));
+      fb.insert(names[c], Imf::Slice(type, base + c * texel, texel * 3, texel * 3 * size_t(image.width())));
     file.setFrameBuffer(fb);
     file.writePixels(image.height());
   }

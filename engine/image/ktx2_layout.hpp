@@ -18,6 +18,7 @@ inline constexpr size_t kHeaderEnd = 12 + 9 * 4;
 inline constexpr size_t kIndexEnd = kHeaderEnd + 4 * 4 + 2 * 8;
 inline constexpr size_t kLevelIndexEntryBytes = 3 * 8;  // byteOffset, byteLength, uncompressedByteLength
 inline constexpr int kChannels = 4;
+inline constexpr int kCubeFaces = 6;
 
 inline constexpr uint32_t kVkFormatRgba16Sfloat = 97;   // VK_FORMAT_R16G16B16A16_SFLOAT
 inline constexpr uint32_t kVkFormatRgba32Sfloat = 109;  // VK_FORMAT_R32G32B32A32_SFLOAT

@@ -79,8 +79,10 @@ PixelPrecision check_texture_kind(const Header& h) {
     throw Error(ErrorKind::Unsupported,
                 fmt::format("KTX2: vkFormat {} is not RGBA16F or RGBA32F", h.vk_format));
   if (h.type_size != ktx2::component_bytes(*precision)) corrupt(fmt::format("typeSize {}", h.type_size));
-  if (h.depth != 0 || h.layers != 0 || h.faces != 1)
-    throw Error(ErrorKind::Unsupported, "KTX2: not a 2D texture (a volume, an array or a cube map)");
+  if (h.depth != 0 || h.layers != 0 || (h.faces != 1 && h.faces != ktx2::kCubeFaces))
+    throw Error(ErrorKind::Unsupported, "KTX2: not a 2D texture or a cube map (a volume or an array)");
+  if (h.faces == ktx2::kCubeFaces && h.width != h.height)
+    corrupt(fmt::format("a cube map of {}x{} faces, not square", h.width, h.height));
   if (h.supercompression != 0) throw Error(ErrorKind::Unsupported, "KTX2: supercompressed");
   if (h.sgd_length != 0 || h.sgd_offset != 0) corrupt("global data without supercompression");
   if (h.levels < 1 || h.levels > uint32_t(std::bit_width(std::max(h.width, h.height))))
@@ -121,6 +123,7 @@ std::map<std::string, std::string> read_key_values(const Reader& in, const Heade
   return out;
 }
 
+// A level of `height` rows: one face, or a cube map's faces one after the other.
 Image read_level(const Reader& in, uint64_t level_index_at, uint32_t p, int width, int height,
                  PixelPrecision precision) {
   const uint64_t entry = level_index_at + uint64_t(p) * ktx2::kLevelIndexEntryBytes;
@@ -161,11 +164,23 @@ Ktx2Texture read_ktx2(std::span<const uint8_t> bytes, const ImageLimits& limits)
   check_dfd(in, h, t.precision);
   t.metadata = read_key_values(in, h);
   const uint64_t level_index_at = ktx2::kIndexEnd;
-  check_image_size(h.width, h.height, limits);  // the levels after it take a third more at most
+  t.faces = h.faces;
+  // The levels after it take a third more at most.
+  check_image_size(h.width, int64_t(h.height) * h.faces, limits);
   for (uint32_t p = 0; p < h.levels; ++p)
     t.levels.push_back(read_level(in, level_index_at, p, int(std::max(1u, h.width >> p)),
-                                  int(std::max(1u, h.height >> p)), t.precision));
+                                  int(std::max(1u, h.height >> p) * h.faces), t.precision));
   return t;
+}
+
+Image ktx2_cube_face(const Image& level, int face) {
+  const int size = level.width();
+  if (level.height() != ktx2::kCubeFaces * size || face < 0 || face >= ktx2::kCubeFaces)
+    throw Error(ErrorKind::InvalidArgument, fmt::format("KTX2: no face {} in a cube map level of {}x{}", face,
+                                                        level.width(), level.height()));
+  Image out(size, size);
+  for (int j = 0; j < size; ++j) std::copy_n(level.row(face * size + j), 3 * size, out.row(j));
+  return out;
 }
 
 }  // namespace lp

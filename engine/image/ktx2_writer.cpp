@@ -41,17 +41,23 @@ class Writer {
   std::vector<uint8_t> bytes_;
 };
 
-void check_chain(std::span<const Image> levels) {
+// A level's image: one face (2D) or six stacked (a cube map). The face of level 0 is w0 x h0.
+void check_chain(std::span<const Image> levels, int faces) {
   if (levels.empty() || levels[0].empty()) throw Error(ErrorKind::InvalidArgument, "KTX2: no base level");
-  const int w0 = levels[0].width(), h0 = levels[0].height();
+  const int w0 = levels[0].width(), h0 = levels[0].height() / faces;
+  if (faces > 1 && (levels[0].height() != faces * w0))
+    throw Error(ErrorKind::InvalidArgument, fmt::format("KTX2: a cube map level of {}x{} is not six square "
+                                                        "faces stacked",
+                                                        levels[0].width(), levels[0].height()));
   const size_t most = size_t(std::bit_width(unsigned(std::max(w0, h0))));
   if (levels.size() > most)
     throw Error(ErrorKind::InvalidArgument,
                 fmt::format("KTX2: {} levels, a {}x{} base has at most {}", levels.size(), w0, h0, most));
   for (size_t p = 1; p < levels.size(); ++p)
-    if (levels[p].width() != std::max(1, w0 >> p) || levels[p].height() != std::max(1, h0 >> p))
-      throw Error(ErrorKind::InvalidArgument, fmt::format("KTX2: level {} is {}x{}, not a mip level of {}x{}",
-                                                          p, levels[p].width(), levels[p].height(), w0, h0));
+    if (levels[p].width() != std::max(1, w0 >> p) || levels[p].height() != faces * std::max(1, h0 >> p))
+      throw Error(ErrorKind::InvalidArgument,
+                  fmt::format("KTX2: level {} is {}x{}, not a mip level of {}x{}", p, levels[p].width(),
+                              levels[p].height(), w0, faces * h0));
 }
 
 std::map<std::string, std::string> all_metadata(const std::map<std::string, std::string>& metadata) {
@@ -89,20 +95,19 @@ void put_pixels(Writer& out, const Image& image, PixelPrecision precision) {
   }
 }
 
-}  // namespace
-
-std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision precision,
-                                const std::map<std::string, std::string>& metadata) {
-  check_chain(levels);
+std::vector<uint8_t> write(std::span<const Image> levels, int faces, PixelPrecision precision,
+                           const std::map<std::string, std::string>& metadata) {
+  check_chain(levels, faces);
   const uint32_t level_count = uint32_t(levels.size());
   Writer out;
   size_t pixel_bytes = 0;
   for (const Image& level : levels) pixel_bytes += size_t(level.pixel_count()) * ktx2::texel_bytes(precision);
   out.reserve(pixel_bytes + levels.size() * ktx2::level_alignment(precision) + 4096);
   out.put_bytes(ktx2::kIdentifier.data(), ktx2::kIdentifier.size());
-  for (const uint32_t field : {ktx2::vk_format(precision), ktx2::component_bytes(precision),
-                               uint32_t(levels[0].width()), uint32_t(levels[0].height()), 0u /* depth */,
-                               0u /* layers */, 1u /* faces */, level_count, 0u /* supercompression */})
+  for (const uint32_t field :
+       {ktx2::vk_format(precision), ktx2::component_bytes(precision), uint32_t(levels[0].width()),
+        uint32_t(levels[0].height() / faces), 0u /* depth */, 0u /* layers */, uint32_t(faces), level_count,
+        0u /* supercompression */})
     out.put(field);
   const size_t index_at = out.size();
   out.put_bytes(std::array<uint8_t, ktx2::kIndexEnd - ktx2::kHeaderEnd>{}.data(),
@@ -132,6 +137,18 @@ std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision pr
     out.put_at(entry + 16, length);
   }
   return out.take();
+}
+
+}  // namespace
+
+std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision precision,
+                                const std::map<std::string, std::string>& metadata) {
+  return write(levels, 1, precision, metadata);
+}
+
+std::vector<uint8_t> write_ktx2_cube(std::span<const Image> levels, PixelPrecision precision,
+                                     const std::map<std::string, std::string>& metadata) {
+  return write(levels, ktx2::kCubeFaces, precision, metadata);
 }
 
 }  // namespace lp

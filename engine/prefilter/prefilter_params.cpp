@@ -17,10 +17,18 @@ void PrefilterParams::validate(const std::string& prefix) const {
   require(
       levels <= most, field_path(prefix, "levels"),
       fmt::format("must be at most log2(base_size) = {} for base_size {}, got {}", most, base_size, levels));
+  const int step = 1 << (levels - 1);
+  require(projection != Projection::Cross || base_size % step == 0, field_path(prefix, "base_size"),
+          fmt::format("must be a multiple of 2^(levels - 1) = {} for a cross of {} levels, got {}", step,
+                      levels, base_size));
 }
 
-LevelSize latlong_level_size(int base_size, int level) {
-  return {std::max(1, base_size >> level), std::max(1, (base_size / 2) >> level)};
+int prefilter_level_size(const PrefilterParams& params, int level) {
+  return std::max(1, params.base_size >> level);
+}
+
+ImageShape prefilter_level_shape(const PrefilterParams& params, int level) {
+  return projection_shape(params.projection, prefilter_level_size(params, level));
 }
 
 }  // namespace lp

@@ -12,7 +12,7 @@ namespace lp {
 namespace {
 
 const std::vector<std::string> kCommands = {"info",    "sample", "median-cut", "fresnel", "render",
-                                            "convert", "sh",     "brdf-lut",   "sun"};
+                                            "convert", "sh",     "brdf-lut",   "sun",     "bake"};
 
 TEST(CliUsage, HelpForTheToolAndEveryCommand) {
   for (const std::vector<std::string>& args :
@@ -45,6 +45,11 @@ TEST(CliUsage, HelpStatesTheApisLimitsAndDefaults) {
   EXPECT_NE(convert.find("latlong, cube, cross, octahedral, equal-area (default latlong)"), std::string::npos)
       << convert;
   EXPECT_NE(convert.find("[2, 8192]"), std::string::npos) << convert;
+  const std::string bake = test::run_cli({"bake", "--help"}).out;
+  EXPECT_NE(bake.find("latlong, cube, cross, octahedral, equal-area (default latlong)"), std::string::npos)
+      << bake;
+  EXPECT_NE(bake.find("in [8, 2048] (default 256)"), std::string::npos) << bake;
+  EXPECT_NE(bake.find("exr, ktx2 (default ktx2)"), std::string::npos) << bake;
 }
 
 TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
@@ -52,7 +57,7 @@ TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"paint"},
        "unknown command 'paint' (expected one of: info, sample, median-cut, fresnel, render, convert, sh, "
-       "brdf-lut, sun)"},
+       "brdf-lut, sun, bake)"},
       {{"info"}, "usage: lightprobe info MAP [options] (see --help)"},
       {{"info", "a.exr", "b.exr"}, "usage: lightprobe info MAP [options] (see --help)"},
       {{"info", "default", "--colour", "red"}, "unknown option '--colour' (see lightprobe info --help)"},

@@ -1,12 +1,14 @@
 // Prefiltered specular chains on the real server: a job from POST to done with its progress, the files
-// read back (KTX2 and EXR) against analytic values, a long job cancelled while it runs, a file asked of
-// a job still queued, and bad input.
+// read back (KTX2, a KTX2 cube map, EXR in every projection) against analytic values, a long job
+// cancelled while it runs, a file asked of a job still queued, a chain reused for the same map content
+// and parameters (and not after a cancel or a removal), and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
@@ -89,6 +91,60 @@ TEST(PrefilterApi, AWhiteMapIsOneAtEveryLevelOfTheKtx2File) {
   EXPECT_EQ(t.metadata.at("lightprobe.roughness"), st["convention"]["roughness"]);
 }
 
+TEST(PrefilterApi, ACubeIsAKtx2CubeMapOfSixFacesAtEveryLevel) {
+  const json st = finished(white(), R"({"levels":4,"base_size":32,"samples":64,"projection":"cube"})");
+  ASSERT_EQ(st["status"], "done") << st;
+  EXPECT_EQ(st["projection"], "cube");
+  EXPECT_EQ(st["level_info"][1]["size"], 16);
+  EXPECT_EQ(st["level_info"][1]["width"], 6 * 16);
+  EXPECT_EQ(st["level_info"][1]["height"], 16);
+  const std::string faces = st["convention"]["cube_faces"];
+  EXPECT_NE(faces.find("+X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << faces;
+  const Reply file = get(st["files"][0]["url"]);
+  ASSERT_EQ(file.status, 200) << file.body;
+  EXPECT_EQ(file.type(), "image/ktx2");
+  const Ktx2Texture t = read_ktx2(bytes_of(file), {});
+  EXPECT_EQ(t.faces, 6u);
+  ASSERT_EQ(t.levels.size(), 4u);
+  for (size_t i = 0; i < t.levels.size(); ++i) {
+    EXPECT_EQ(t.levels[i].width(), 32 >> i);
+    EXPECT_EQ(t.levels[i].height(), 6 * (32 >> i));
+    expect_all_near(t.levels[i], 1.0f, 1e-3f);
+  }
+  EXPECT_EQ(t.metadata.at("lightprobe.cube_faces"), faces);
+  EXPECT_EQ(t.metadata.at("lightprobe.projection"), st["convention"]["projection"]);
+}
+
+// One EXR a level, of the projection's shape: a white map is 1 on every texel that looks somewhere (a
+// cross's six empty cells are 0). Float precision: 1 to float rounding.
+TEST(PrefilterApi, EveryProjectionHasItsShapeAndIsOneForAWhiteMap) {
+  const std::vector<std::tuple<std::string, int, int>> shapes = {{"latlong", 16, 8},
+                                                                 {"cube", 6 * 16, 16},
+                                                                 {"cross", 4 * 16, 3 * 16},
+                                                                 {"octahedral", 16, 16},
+                                                                 {"equal-area", 16, 16}};
+  for (const auto& [projection, width, height] : shapes) {
+    SCOPED_TRACE(projection);
+    const json st =
+        finished(white(), R"({"levels":3,"base_size":16,"samples":32,"format":"exr","precision":"float",
+                                           "projection":")" +
+                              projection + "\"}");
+    ASSERT_EQ(st["status"], "done") << st;
+    ASSERT_EQ(st["files"].size(), 3u);
+    for (int level = 0; level < 3; ++level) {
+      const Reply r = get(st["files"][size_t(level)]["url"]);
+      ASSERT_EQ(r.status, 200);
+      const Image image = read_exr(bytes_of(r), {});
+      ASSERT_EQ(image.width(), width >> level);
+      ASSERT_EQ(image.height(), height >> level);
+      float lo = 1, hi = 0;
+      for (const float v : image.data()) lo = std::min(lo, v), hi = std::max(hi, v);
+      EXPECT_NEAR(hi, 1.0f, 1e-4f);
+      EXPECT_NEAR(lo, projection == "cross" ? 0.0f : 1.0f, 1e-4f);
+    }
+  }
+}
+
 TEST(PrefilterApi, ExrLevelsOfARealMapKeepItsPowerAtLevelZero) {
   const json st = finished("forest_exr", R"({"levels":4,"base_size":128,"samples":64,"format":"exr",
                                               "precision":"float"})");
@@ -147,6 +203,83 @@ TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
   EXPECT_TRUE(listed);
 }
 
+// Number of jobs the server holds.
+size_t job_count() {
+  return get("/api/v1/prefilters").body_json()["prefilters"].size();
+}
+
+TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
+  const std::string body = R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral"})";
+  const Reply first = submit(white(), body);
+  ASSERT_EQ(first.status, 202) << first.body;
+  EXPECT_EQ(first.body_json()["reused"], false);
+  const std::string url = first.header("Location");
+  const json done = test::finished_job(client(), url);
+  ASSERT_EQ(done["status"], "done");
+
+  // The same pixels under another id, the same parameters given explicitly: the same job, done.
+  const Reply again_upload = test::upload_white_map(client(), "prefilter_white_again");
+  ASSERT_TRUE(again_upload.status == 201 || again_upload.status == 409);
+  const size_t jobs = job_count();
+  const Reply again = submit("prefilter_white_again", R"({"levels":3,"base_size":16,"samples":48,
+      "projection":"octahedral","format":"ktx2","precision":"half"})");
+  EXPECT_EQ(again.status, 200) << again.body;
+  EXPECT_EQ(again.header("Location"), url);
+  EXPECT_EQ(again.body_json()["reused"], true);
+  EXPECT_EQ(again.body_json()["id"], first.body_json()["id"]);
+  EXPECT_EQ(again.body_json()["status"], "done");
+  EXPECT_EQ(again.body_json()["elapsed_s"], done["elapsed_s"]);  // not run again
+  EXPECT_EQ(job_count(), jobs);
+  EXPECT_FALSE(get(url).body_json().contains("reused"));  // the answer of the POST alone says it
+
+  // Any parameter other, or another map: a new job.
+  const std::vector<std::string> others = {
+      R"({"levels":2,"base_size":16,"samples":48,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":32,"samples":48,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":16,"samples":64,"projection":"octahedral"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"equal-area"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","format":"exr"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","precision":"float"})"};
+  for (const std::string& other : others) {
+    const Reply r = submit(white(), other);
+    EXPECT_EQ(r.status, 202) << other;
+    EXPECT_EQ(r.body_json()["reused"], false) << other;
+    EXPECT_EQ(test::finished_job(client(), r.header("Location"))["status"], "done");
+  }
+  const Reply forest = submit("forest_exr", body);
+  EXPECT_EQ(forest.status, 202);
+  EXPECT_EQ(test::finished_job(client(), forest.header("Location"))["status"], "done");
+
+  // Removed with DELETE: made again.
+  EXPECT_EQ(del(url).status, 204);
+  const Reply after_delete = submit(white(), body);
+  EXPECT_EQ(after_delete.status, 202);
+  EXPECT_NE(after_delete.header("Location"), url);
+  EXPECT_EQ(test::finished_job(client(), after_delete.header("Location"))["status"], "done");
+}
+
+TEST(PrefilterApi, ARunningJobIsReusedUntilItIsCancelled) {
+  const std::string body = R"({"levels":11,"base_size":2048,"samples":16000,"projection":"equal-area"})";
+  const Reply first = submit("forest_exr", body);
+  ASSERT_EQ(first.status, 202) << first.body;
+  const std::string url = first.header("Location");
+  const Reply again = submit("forest_exr", body);
+  EXPECT_EQ(again.status, 200);
+  EXPECT_EQ(again.header("Location"), url);
+  EXPECT_EQ(again.body_json()["reused"], true);
+  EXPECT_NE(again.body_json()["status"], "done");
+  EXPECT_EQ(del(url).status, 202);
+  // Cancelled (or cancelling): not reused.
+  const Reply after_cancel = submit("forest_exr", body);
+  EXPECT_EQ(after_cancel.status, 202);
+  EXPECT_NE(after_cancel.header("Location"), url);
+  EXPECT_EQ(del(after_cancel.header("Location")).status, 202);
+  EXPECT_EQ(test::finished_job(client(), url)["status"], "cancelled");
+  EXPECT_EQ(test::finished_job(client(), after_cancel.header("Location"))["status"], "cancelled");
+  EXPECT_EQ(del(url).status, 204);
+  EXPECT_EQ(del(after_cancel.header("Location")).status, 204);
+}
+
 TEST(PrefilterApi, BadInputIsA400NamingTheField) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"levels":0})", "'levels'"},
@@ -155,6 +288,8 @@ TEST(PrefilterApi, BadInputIsA400NamingTheField) {
       {R"({"samples":"many"})", "'samples'"},
       {R"({"format":"png"})", "'format'"},
       {R"({"precision":"double"})", "'precision'"},
+      {R"({"projection":"mirror-ball"})", "'projection'"},
+      {R"({"projection":"cross","base_size":40,"levels":5})", "'base_size'"},
       {R"({"roughness":1})", "'roughness'"},
   };
   for (const auto& [body, field] : cases) {

@@ -1,6 +1,7 @@
 // KTX 2.0 files: the bytes write_ktx2 lays out, read field by field against the specification (header,
 // index, level index from the largest level with the data from the smallest, alignment, the Data Format
-// Descriptor of RGBA16F, sorted metadata), the round trip through read_ktx2, and refusals.
+// Descriptor of RGBA16F, sorted metadata), the round trip through read_ktx2 of 2D textures and cube
+// maps, and refusals.
 #include "engine/image/ktx2.hpp"
 
 #include <gtest/gtest.h>
@@ -179,6 +180,80 @@ TEST(Ktx2, ReadsAFileOfAnotherWriter) {
                Error);
 }
 
+// Six faces of size x size, face f of level p holding (f + 1) (p + 1) (x + 2 y + 1) / 64: a cube map's
+// levels, the faces stacked.
+std::vector<Image> cube_chain(int size, int levels) {
+  std::vector<Image> out;
+  for (int p = 0; p < levels; ++p) {
+    const int n = size >> p;
+    Image image(n, 6 * n);
+    for (int f = 0; f < 6; ++f)
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const float v = float((f + 1) * (p + 1) * (x + 2 * y + 1)) / 64.0f;
+          image.set(x, f * n + y, {v, 2 * v, -v});
+        }
+    out.push_back(std::move(image));
+  }
+  return out;
+}
+
+TEST(Ktx2, ACubeMapHasSixFacesAfterEachOtherInEveryLevel) {
+  const auto levels = cube_chain(8, 4);
+  const auto bytes = write_ktx2_cube(levels, PixelPrecision::Float, {{"lightprobe.faces", "px nx"}});
+  EXPECT_EQ(at<uint32_t>(bytes, 20), 8u);  // pixelWidth: a face
+  EXPECT_EQ(at<uint32_t>(bytes, 24), 8u);  // pixelHeight
+  EXPECT_EQ(at<uint32_t>(bytes, 36), 6u);  // faceCount
+  EXPECT_EQ(at<uint32_t>(bytes, 40), 4u);  // levelCount
+  // Level 1: 6 faces of 4 x 4 texels of 16 bytes, face 2 (+Y) starting 2 faces in.
+  const auto level1 = at<uint64_t>(bytes, 80 + 24);
+  EXPECT_EQ(at<uint64_t>(bytes, 80 + 24 + 8), 6u * 4 * 4 * 16);
+  EXPECT_EQ(at<float>(bytes, size_t(level1) + 2 * 4 * 4 * 16), 3.0f * 2 * 1 / 64);
+
+  const Ktx2Texture t = read_ktx2(bytes, {});
+  EXPECT_EQ(t.faces, 6u);
+  ASSERT_EQ(t.levels.size(), 4u);
+  for (size_t p = 0; p < t.levels.size(); ++p) {
+    ASSERT_EQ(t.levels[p].width(), 8 >> p);
+    ASSERT_EQ(t.levels[p].height(), 6 * (8 >> p));
+    EXPECT_EQ(t.levels[p].data().size(), levels[p].data().size());
+    EXPECT_TRUE(std::equal(t.levels[p].data().begin(), t.levels[p].data().end(), levels[p].data().begin()));
+  }
+  const Image nz = ktx2_cube_face(t.levels[0], 5);
+  EXPECT_EQ(nz.width(), 8);
+  EXPECT_EQ(nz.at(1, 2).x, 6.0f * 6 / 64);
+  EXPECT_EQ(t.metadata.at("lightprobe.faces"), "px nx");
+  EXPECT_EQ(read_ktx2(write_ktx2(chain(4, 2, 1), PixelPrecision::Half), {}).faces, 1u);
+}
+
+// A cube map of the fuzz corpus written by a short Python script following the specification: face f of
+// level p holds the values of cube_chain.
+TEST(Ktx2, ReadsACubeMapOfAnotherWriter) {
+  const Ktx2Texture t =
+      read_ktx2(test::read_bytes(test::fuzz_corpus_path("ktx2", "cube_half_4x4_3_levels.ktx2")), {});
+  EXPECT_EQ(t.faces, 6u);
+  const auto want = cube_chain(4, 3);
+  ASSERT_EQ(t.levels.size(), want.size());
+  for (size_t p = 0; p < want.size(); ++p) {
+    ASSERT_EQ(t.levels[p].width(), want[p].width());
+    ASSERT_EQ(t.levels[p].height(), want[p].height());
+    for (size_t i = 0; i < want[p].data().size(); ++i)
+      EXPECT_NEAR(t.levels[p].data()[i], want[p].data()[i], std::abs(want[p].data()[i]) * 0x1p-10f);
+  }
+}
+
+TEST(Ktx2, CubeMapsAreSquareFacesInAMipChain) {
+  EXPECT_THROW(write_ktx2_cube(chain(8, 8, 1), PixelPrecision::Half), Error);  // not six faces
+  auto levels = cube_chain(8, 2);
+  levels[1] = Image(4, 4);
+  EXPECT_THROW(write_ktx2_cube(levels, PixelPrecision::Half), Error);
+  EXPECT_THROW(write_ktx2_cube(cube_chain(8, 5), PixelPrecision::Half), Error);  // 8 x 8 has 4 levels
+  EXPECT_THROW(ktx2_cube_face(Image(8, 8), 0), Error);
+  ImageLimits small;
+  small.max_pixels = 8 * 8 * 6 - 1;  // the six faces of level 0 count
+  EXPECT_THROW(read_ktx2(write_ktx2_cube(cube_chain(8, 1), PixelPrecision::Half), small), Error);
+}
+
 void expect_refused(const std::vector<uint8_t>& bytes, ErrorKind kind) {
   try {
     read_ktx2(bytes, {});
@@ -194,7 +269,8 @@ TEST(Ktx2, ReaderRefusesBrokenFiles) {
   expect_refused({good.begin(), good.end() - 1}, ErrorKind::Corrupt);
   expect_refused(with<uint8_t>(good, 5, '1'), ErrorKind::Unsupported);           // "KTX 10"
   expect_refused(with<uint32_t>(good, 12, 37), ErrorKind::Unsupported);          // VK_FORMAT_R8G8B8A8_UNORM
-  expect_refused(with<uint32_t>(good, 36, 6), ErrorKind::Unsupported);           // a cube map
+  expect_refused(with<uint32_t>(good, 36, 2), ErrorKind::Unsupported);           // two faces
+  expect_refused(with<uint32_t>(good, 36, 6), ErrorKind::Corrupt);               // a cube of 16 x 8 faces
   expect_refused(with<uint32_t>(good, 44, 2), ErrorKind::Unsupported);           // Zstandard
   expect_refused(with<uint32_t>(good, 40, 6), ErrorKind::Corrupt);               // a 16 x 8 base has 5 levels
   expect_refused(with<uint64_t>(good, 80, good.size()), ErrorKind::Corrupt);     // level 0 past the end

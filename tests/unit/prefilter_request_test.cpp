@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "api/api_error.hpp"
 #include "api/prefilter_files.hpp"
 #include "api/prefilter_schema.hpp"
@@ -27,11 +29,13 @@ TEST(PrefilterRequest, EmptyBodyMeansDefaults) {
     EXPECT_EQ(r.params.levels, 6);
     EXPECT_EQ(r.params.base_size, 256);
     EXPECT_EQ(r.params.samples, 1024);
+    EXPECT_EQ(r.params.projection, Projection::LatLong);
     EXPECT_EQ(r.format, PrefilterFormat::Ktx2);
     EXPECT_EQ(r.precision, PixelPrecision::Half);
   }
   const PrefilterRequest r = parse_prefilter_request(
-      R"({"levels":9,"base_size":512,"samples":64,"format":"exr","precision":"float"})");
+      R"({"levels":9,"base_size":512,"samples":64,"projection":"equal-area","format":"exr","precision":"float"})");
+  EXPECT_EQ(r.params.projection, Projection::EqualArea);
   EXPECT_EQ(r.params.levels, 9);
   EXPECT_EQ(r.params.base_size, 512);
   EXPECT_EQ(r.params.samples, 64);
@@ -50,9 +54,13 @@ TEST(PrefilterRequest, BadFieldsAreNamed) {
       {R"({"samples":1.5})", "'samples'"},
       {R"({"format":"png"})", "'format'"},
       {R"({"precision":"double"})", "'precision'"},
+      {R"({"projection":"sphere"})",
+       "'projection': 'sphere' is not one of: latlong, cube, cross, octahedral, equal-area"},
+      {R"({"projection":"cross","base_size":100})", "'base_size': must be a multiple of 2^(levels - 1) = 32"},
       {R"({"level":3})", "'level'"},
   };
-  for (const auto& [body, field] : cases) EXPECT_NE(refusal(body).find(field), std::string::npos) << body;
+  for (const auto& [body, field] : cases)
+    EXPECT_NE(refusal(body).find(field), std::string::npos) << refusal(body);
   EXPECT_NE(refusal("[1]").find("JSON object"), std::string::npos);
 }
 
@@ -79,6 +87,33 @@ TEST(PrefilterRequest, TheDescriptionGivesEveryLevelsSizeAndRoughness) {
   EXPECT_EQ(out["files_available"], false);
   EXPECT_TRUE(out["source_width"].is_null());
   EXPECT_NE(out["convention"]["roughness"].get<std::string>().find("roughness^2"), std::string::npos);
+  EXPECT_EQ(out["projection"], "latlong");
+  EXPECT_FALSE(out["convention"].contains("cube_faces"));
+}
+
+// Sizes in the projection's terms: a cube's level of size n is the strip 6n x n, a cross 4n x 3n, a
+// square n x n; the faces' frame is stated as cube_face.hpp declares it.
+TEST(PrefilterRequest, TheDescriptionGivesSizesInTheProjectionsTerms) {
+  const std::vector<std::tuple<std::string, int, int>> cases = {
+      {"cube", 6 * 16, 16}, {"cross", 4 * 16, 3 * 16}, {"octahedral", 16, 16}, {"equal-area", 16, 16}};
+  for (const auto& [projection, width, height] : cases) {
+    const auto r =
+        parse_prefilter_request(R"({"levels":4,"base_size":64,"projection":")" + projection + "\"}");
+    Json out;
+    describe_prefilter(out, r, {"forest", "/f", false, 0});
+    EXPECT_EQ(out["projection"], projection);
+    EXPECT_EQ(out["level_info"][2]["size"], 16) << projection;
+    EXPECT_EQ(out["level_info"][2]["width"], width) << projection;
+    EXPECT_EQ(out["level_info"][2]["height"], height) << projection;
+  }
+  const auto cube = parse_prefilter_request(R"({"projection":"cube"})");
+  Json out;
+  describe_prefilter(out, cube, {"forest", "/f", false, 0});
+  const std::string faces = out["convention"]["cube_faces"];
+  EXPECT_NE(faces.find("+X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << faces;
+  EXPECT_NE(faces.find("(x, y, z) is the cube direction (x, z, -y)"), std::string::npos) << faces;
+  EXPECT_NE(faces.find("py looks at +z, right +x, down -y"), std::string::npos) << faces;
+  EXPECT_NE(faces.find("pz looks at -y, right +x, down -z"), std::string::npos) << faces;
 }
 
 }  // namespace
