@@ -1,5 +1,6 @@
 // OpenEXR through the OpenEXR library, from and to memory: any compression it supports,
 // scanline or tiled, RGB(A) or Y channels.
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -12,6 +13,7 @@
 #include <cstring>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "engine/image/exr_capacity.hpp"
 #include "engine/image/image_limits.hpp"
@@ -112,18 +114,22 @@ std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression, P
   enable_exr_threads();
   Imf::Header header(image.width(), image.height());
   header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
-  // The library converts the float pixels to the file's channel type as it writes them.
-  const Imf::PixelType type = precision == PixelPrecision::Half ? Imf::HALF : Imf::FLOAT;
+  // The library writes a channel from a slice of its own type only: half channels from halves.
+  const bool half = precision == PixelPrecision::Half;
+  const Imf::PixelType type = half ? Imf::HALF : Imf::FLOAT;
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(type));
+  std::vector<Imath::half> halves;
+  if (half) halves.assign(image.data().begin(), image.data().end());
+  char* base = half ? reinterpret_cast<char*>(halves.data())
+                    : reinterpret_cast<char*>(const_cast<float*>(image.data().data()));
+  const size_t texel = 3 * (half ? sizeof(Imath::half) : sizeof(float));
   MemoryOStream stream;
   {
     Imf::OutputFile file(stream, header);
     Imf::FrameBuffer fb;
     const char* names[] = {"R", "G", "B"};
-    auto* base = const_cast<float*>(image.data().data());
-    for (int c = 0; c < 3; ++c)
-      fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(base + c), sizeof(float) * 3,
-                                     sizeof(float) * 3 * size_t(image.width())));
+    for (size_t c = 0; c < 3; ++c)
+      fb.insert(names[c], Imf::Slice(type, base + c * texel / 3, texel, texel * size_t(image.width())));
     file.setFrameBuffer(fb);
     file.writePixels(image.height());
   }

@@ -1,21 +1,23 @@
 // Readers on the real maps, PFM orientation and byte order, writers round-trip, limits and bad data.
+#include "engine/image/image_io.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <stb_image.h>
 
 #include <bit>
 #include <cmath>
 #include <cstring>
 
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-
 #include "engine/core/error.hpp"
-#include "engine/image/image_io.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
 namespace {
 
-Image read_real(const std::string& file) { return read_image_file(test::envmap_path(file)).image; }
+Image read_real(const std::string& file) {
+  return read_image_file(test::envmap_path(file)).image;
+}
 
 // A 3x2 image whose every value is distinct: (x, y, c) -> 100 y + 10 x + c.
 Image numbered_image() {
@@ -28,7 +30,8 @@ Image numbered_image() {
   return img;
 }
 
-std::vector<uint8_t> pfm_bytes(const std::string& header, const std::vector<float>& values, bool little_endian) {
+std::vector<uint8_t> pfm_bytes(const std::string& header, const std::vector<float>& values,
+                               bool little_endian) {
   std::vector<uint8_t> out(header.begin(), header.end());
   for (float v : values) {
     uint32_t bits = std::bit_cast<uint32_t>(v);
@@ -80,7 +83,8 @@ TEST(ImageIo, ExrAndRadianceHdrOfTheSameSceneAgreeToRgbePrecision) {
         abs_value += a[c];
       }
     }
-  EXPECT_LT(abs_error / abs_value, 1.0 / 256);  // under one step of an 8-bit mantissa on average (measured 0.24%)
+  EXPECT_LT(abs_error / abs_value,
+            1.0 / 256);  // under one step of an 8-bit mantissa on average (measured 0.24%)
 }
 
 TEST(ImageIo, PfmRowsAreStoredBottomToTop) {
@@ -111,6 +115,15 @@ TEST(ImageIo, ExrRoundTripIsExact) {
   for (size_t i = 0; i < src.data().size(); ++i) EXPECT_EQ(src.data()[i], back.data()[i]);
 }
 
+// Half precision keeps 11 significant bits: a relative error of at most 2^-11 (every value here is normal).
+TEST(ImageIo, ExrInHalfPrecisionRoundsEachValueToTheNearestHalf) {
+  const Image src = read_real("forest.exr");
+  const Image back = read_image(write_exr(src, ExrCompression::Zip, PixelPrecision::Half)).image;
+  ASSERT_EQ(back.width(), src.width());
+  for (size_t i = 0; i < src.data().size(); ++i)
+    ASSERT_NEAR(back.data()[i], src.data()[i], std::ldexp(src.data()[i], -11) + 1e-7f) << "value " << i;
+}
+
 TEST(ImageIo, PfmRoundTripIsExact) {
   const Image src = read_real("forest.pfm");
   const Image back = read_image(write_pfm(src)).image;
@@ -120,7 +133,8 @@ TEST(ImageIo, PfmRoundTripIsExact) {
 TEST(ImageIo, HdrRoundTripKeepsRgbePrecision) {
   const Image src = numbered_image();
   const Image back = read_image(write_hdr(src)).image;
-  for (size_t i = 0; i < src.data().size(); ++i) EXPECT_NEAR(src.data()[i], back.data()[i], src.data()[i] / 128.0f + 1e-3f);
+  for (size_t i = 0; i < src.data().size(); ++i)
+    EXPECT_NEAR(src.data()[i], back.data()[i], src.data()[i] / 128.0f + 1e-3f);
 }
 
 TEST(ImageIo, PngIsToneMappedWithExposureAndGamma) {
@@ -163,12 +177,14 @@ TEST(ImageIo, TruncatedFilesAreCorrupt) {
     expect_error_kind(ErrorKind::Corrupt, [&] { read_image(bytes); });
   }
   const std::string bad_header = "PF\nabc 2\n-1.0\n";
-  expect_error_kind(ErrorKind::Corrupt, [&] { read_image(std::vector<uint8_t>(bad_header.begin(), bad_header.end())); });
+  expect_error_kind(ErrorKind::Corrupt,
+                    [&] { read_image(std::vector<uint8_t>(bad_header.begin(), bad_header.end())); });
 }
 
 TEST(ImageIo, UnknownBytesAreUnsupported) {
   const std::string text = "hello, this is not an image";
-  expect_error_kind(ErrorKind::Unsupported, [&] { read_image(std::vector<uint8_t>(text.begin(), text.end())); });
+  expect_error_kind(ErrorKind::Unsupported,
+                    [&] { read_image(std::vector<uint8_t>(text.begin(), text.end())); });
   expect_error_kind(ErrorKind::Unsupported, [&] { read_image(std::vector<uint8_t>{}); });
 }
 
