@@ -61,13 +61,15 @@ function watch(job) {
 
 async function submit(event) {
   event.preventDefault();
-  if (!state.map) return showError(panel(), 'load a map first');
-  if (!checkFields(form())) return undefined;
+  if (!state.map) {
+    showError(panel(), 'load a map first');
+    return;
+  }
+  if (!checkFields(form())) return;
   const { levels, base_size, samples, format, precision } = formValues(form());
   const body = { levels, base_size, samples, format, precision };
   const job = await busy(panel(), () => api(`/envmaps/${encodeURIComponent(state.map)}/prefilter`, { method: 'POST', json: body }));
   if (job) watch(job);
-  return undefined;
 }
 
 async function cancel() {
