@@ -91,6 +91,7 @@ test('a small prefilter job reaches done and shows every level side by side at o
   const job = await (await fetch(`${server.base}/api/v1/prefilters/${id}`)).json();
   assert.equal(job.status, 'done');
   assert.equal(job.level_info.length, 3);
+  assert.match(await page.locator('#prefilter-stats').innerText(), /^chain\nforest · 3 levels from 16×8 · 16 samples\n/);
   for (const level of job.level_info)
     await waitForImage(page, `#prefilter-strip figure[data-level="${level.level}"] img`, level.width);
   const figures = page.locator('#prefilter-strip figure');

@@ -137,7 +137,7 @@ export async function screenshot(page, name, { wholePage = false } = {}) {
 // Saves one element (a panel) as NAME.png in the screenshot directory, the sticky header kept off it.
 export async function elementScreenshot(page, selector, name) {
   mkdirSync(screenshots, { recursive: true });
-  await page.locator(selector).screenshot({ path: path.join(screenshots, `${name}.png`), style: '.top { position: static !important; }' });
+  await page.locator(selector).screenshot({ path: path.join(screenshots, `${name}.png`), style: '.top { position: static !important; }', animations: 'disabled' });
 }
 
 // Types values into the named fields of a form: fillForm(page, '#prefilter-form', { levels: 3 }).

@@ -29,10 +29,21 @@ function showStrip(job) {
     loadImage($('img', figure), apiUrl(`/prefilters/${job.id}/levels/${i}.png`, { exposure }), current)));
 }
 
+function showStats(job) {
+  const [top] = job.level_info;
+  const items = [
+    ['chain', `${job.envmap} · ${job.levels} levels from ${top.width}×${top.height} · ${job.samples} samples`],
+    ['time', `${num(job.elapsed_s, 3)} s`],
+  ];
+  if (job.source_width) items.push(['lobes read', `the map reduced to ${job.source_width} texels wide`]);
+  $('#prefilter-stats').replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
+}
+
 function showJob(job) {
   if (!watched || watched.id !== job.id) return;
   watched.job = job;
   showProgress(job, jobView());
+  showStats(job);
   if (job.error) showError(panel(), `${job.error.code}: ${job.error.message}`);
   if (job.status !== 'done') return;
   offerFiles($('#prefilter-downloads'), job.files);
