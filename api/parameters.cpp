@@ -180,6 +180,8 @@ void add_prefilter_parameters(std::vector<Doc>& d) {
   d.push_back(enum_doc(body(path, "precision"), std::optional(r.precision)));
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "format"}), std::optional<PrefilterFormat>()));
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "precision"}), std::optional<PixelPrecision>()));
+  const Range<int> level{0, limits::kPrefilterLevels.max - 1};
+  d.push_back(range_doc(query("/api/v1/prefilters/{id}/levels/{n}.png", "get", "n"), level));
 }
 
 void add_sun_parameters(std::vector<Doc>& d) {

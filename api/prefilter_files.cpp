@@ -1,5 +1,7 @@
 #include "api/prefilter_files.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 
@@ -83,6 +85,14 @@ int64_t prefilter_file_bytes(const PrefilterRequest& request, const std::string&
   // The texels at 16 bytes (RGBA float), the header and the metadata; a cube map's faces restacked too.
   const int64_t restacked = p.projection == Projection::Cube ? prefiltered_chain_bytes(p) : 0;
   return prefiltered_chain_bytes(p) * 16 / 12 + restacked + (1 << 16);
+}
+
+int prefilter_level_index(const PrefilterRequest& request, const std::string& text) {
+  const int levels = request.params.levels;
+  for (int i = 0; i < levels; ++i)
+    if (text == std::to_string(i)) return i;
+  throw not_found(
+      fmt::format("no level '{}' in this chain; its levels are 0 to {}", excerpt(text), levels - 1));
 }
 
 std::vector<uint8_t> encode_prefilter_file(const PrefilteredChain& chain, const PrefilterRequest& request,

@@ -22,6 +22,10 @@ std::vector<std::pair<std::string, std::string>> prefilter_conventions(const Pre
 // The bytes encoding the file `name` takes at most (its encoder's buffers included); 404 for a name
 // that is not one of the chain's files.
 int64_t prefilter_file_bytes(const PrefilterRequest& request, const std::string& name);
+// The level a preview path names ("0" .. "levels - 1", decimal as written by std::to_string); 404 for
+// any other text.
+int prefilter_level_index(const PrefilterRequest& request, const std::string& text);
+
 std::vector<uint8_t> encode_prefilter_file(const PrefilteredChain& chain, const PrefilterRequest& request,
                                            const std::string& name);
 

@@ -2,13 +2,15 @@
 // that makes or made the same chain of the same map content (200, "reused": true); status, cancel /
 // remove, the list, and the files of a finished chain. They run on a job manager of their own
 // (App::prefilters), the same machinery as renders with its own queue.
-#include <mutex>
-
 #include <fmt/format.h>
+
+#include <mutex>
 
 #include "api/api_error.hpp"
 #include "api/prefilter_files.hpp"
 #include "api/prefilter_request.hpp"
+#include "api/preview_params.hpp"
+#include "engine/image/image_io.hpp"
 #include "server/envmap_fingerprint.hpp"
 #include "server/job_routes.hpp"
 #include "server/prefilter_job.hpp"
@@ -71,17 +73,34 @@ void list(const App& app, httplib::Response& res) {
                   {"queued", app.prefilters.queued_count()}});
 }
 
+std::shared_ptr<const PrefilteredChain> finished_chain(const PrefilterJob& job) {
+  auto chain = job.chain();
+  if (!chain)
+    throw api::ApiError(api::ErrorCode::NoImageYet, fmt::format("prefilter '{}' is {} and has no chain yet",
+                                                                job.id(), enum_name(job.status())));
+  return chain;
+}
+
 void file(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_prefilter(app, path_param(req, 1));
   const std::string name = path_param(req, 2);
   const int64_t bytes = api::prefilter_file_bytes(job->request(), name);  // 404 for an unknown name
-  const auto chain = job->chain();
-  if (!chain)
-    throw api::ApiError(api::ErrorCode::NoImageYet, fmt::format("prefilter '{}' is {} and has no chain yet",
-                                                                job->id(), enum_name(job->status())));
+  const auto chain = finished_chain(*job);
   auto memory = app.memory.reserve(bytes, MemoryUse::Transient, "encoding " + name);
   send_reserved(res, api::encode_prefilter_file(*chain, job->request(), name),
                 api::prefilter_file_mime_type(job->request().format), std::move(memory));
+}
+
+// A level tone mapped to PNG, to be looked at (the files hold the values).
+void level_png(App& app, const httplib::Request& req, httplib::Response& res) {
+  const auto job = find_prefilter(app, path_param(req, 1));
+  const int level = api::prefilter_level_index(job->request(), path_param(req, 2));
+  const ToneMap tone = api::parse_tone_map(req.params);
+  const auto chain = finished_chain(*job);
+  const Image& image = chain->levels[size_t(level)];
+  const int64_t drawing = int64_t(image.width()) * image.height() * 3;
+  send_png_picture(res, app.memory, image.width(), image.height(), drawing, "a prefiltered level picture",
+                   [&] { return tone_map_rgb8(image, tone); });
 }
 
 }  // namespace
@@ -94,6 +113,7 @@ void register_prefilter_routes(Router& router, App& app) {
     send_json(res, find_prefilter(app, path_param(req, 1))->status_json());
   });
   router.get("/api/v1/prefilters/{id}/files/{name}", endpoint_of(app, file), Caching::Revalidate);
+  router.get("/api/v1/prefilters/{id}/levels/{n}.png", endpoint_of(app, level_png), Caching::Revalidate);
   router.del("/api/v1/prefilters/{id}", [&app](const httplib::Request& req, httplib::Response& res) {
     cancel_or_remove(app.prefilters, *find_prefilter(app, path_param(req, 1)), "prefilter job", res);
   });

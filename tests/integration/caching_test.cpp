@@ -103,6 +103,7 @@ TEST(Caching, EveryPureResultRoute) {
       {"/api/v1/envmaps/default/image?projection=cube&size=8&format=exr", "no-cache"},
       {"/api/v1/renders/" + id + "/image", "no-cache"},
       {prefilter.header("Location") + "/files/prefiltered.ktx2", "no-cache"},
+      {prefilter.header("Location") + "/levels/1.png", "no-cache"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5", "max-age=3600"},
       {"/api/v1/brdf-lut?size=8", "max-age=3600"},
       {"/api/v1/fresnel?eta_i=1&eta_t=1.5&format=csv", "max-age=3600"},

@@ -2,7 +2,7 @@
 // checked against what the API says. Run: LIGHTPROBE_SERVER_BIN=build/bin/lightprobe-server node --test
 import { test, beforeEach, afterEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { mapWidth, mapHeight, useDashboard, renderSphere, download, pngSize, isExr, csvRows } from './support.mjs';
+import { mapWidth, mapHeight, useDashboard, renderSphere, download, pngSize, isExr, csvRows, prefilterChain } from './support.mjs';
 
 let server, browser, page;
 useDashboard({ ready: (s) => ({ server, browser } = s) });
@@ -43,12 +43,15 @@ async function saveExr(bar, name) {
 }
 
 const BARS = ['map-list', 'map-image', 'samples-image', 'distribution', 'median-cut-image', 'median-cut-lights', 'fresnel',
-  'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image'];
+  'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image', 'prefilter'];
+
+const prefiltered = async (fields) => getJson(`/prefilters/${await prefilterChain(page, fields)}`);
 
 test('the page offers every image and table for download once it shows them', async () => {
   await page.locator('#map-list tr[data-id=forest]').waitFor();
   const id = await renderSphere(page);
   await page.locator(`#render-jobs tr[data-id="${id}"][data-status=done]`).waitFor();
+  await prefiltered({ levels: 2, base_size: 16, samples: 16 });
   for (const bar of BARS) await page.locator(`#${bar}-downloads`).waitFor();
   const all = await page.$$eval('.downloads', (bars) => bars.map((b) => b.id.replace(/-downloads$/, '')));
   assert.deepEqual(all.sort(), [...BARS].sort()); // (the side-by-side renders' links: dashboard.test.mjs)
@@ -97,6 +100,20 @@ test('the SH reconstruction as PNG, the coefficients as JSON and CSV, the BRDF t
   assert.equal(rows[0]['radiance.1'], String(sh.radiance.coefficients[0].rgb[1]));
   await saveExr('lut-image', 'brdf-lut-128');
   await savePng('lut-image', 'brdf-lut-128', [128, 128]);
+});
+
+test('the prefiltered chain\'s files under their own names: each level as EXR, or the chain as KTX2', async () => {
+  const exr = await prefiltered({ levels: 3, base_size: 16, samples: 16, format: 'exr' });
+  assert.deepEqual(exr.files.map((f) => f.name), ['level0.exr', 'level1.exr', 'level2.exr']);
+  for (const file of exr.files) {
+    const saved = await download(page, page.locator(`#prefilter-downloads a[download="${file.name}"]`));
+    assert.equal(saved.name, file.name);
+    assert.ok(isExr(saved.bytes), `${file.name} is no OpenEXR file`);
+  }
+  await prefiltered({ levels: 3, base_size: 16, samples: 16, format: 'ktx2' });
+  const ktx2 = await save('prefilter', 'ktx2');
+  assert.equal(ktx2.name, 'prefiltered.ktx2');
+  assert.equal(ktx2.bytes.subarray(1, 7).toString('latin1'), 'KTX 20'); // «KTX 20» identifier
 });
 
 test('the Fresnel table as the API gives it, JSON and CSV', async () => {

@@ -3,7 +3,7 @@
 // in $LIGHTPROBE_SCREENSHOT_DIR. Run: LIGHTPROBE_SERVER_BIN=build/bin/lightprobe-server node --test
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useDashboard, renderSphere, waitForImage, screenshot } from './support.mjs';
+import { useDashboard, renderSphere, waitForImage, screenshot, prefilterChain } from './support.mjs';
 
 const SCREENS = [
   { name: 'desktop', width: 1280, height: 800 },
@@ -24,10 +24,15 @@ const outside = () => page.evaluate(() => {
     .map(({ e, box }) => `${e.outerHTML.slice(0, 120)} at x ${Math.round(box.left)}..${Math.round(box.right)} of ${width}`);
 });
 
-// Fills the page with what makes it wide: the map list with its Delete button, a render wider than a
-// phone still running (its Cancel button in the job list), a side-by-side pair, messages beside fields.
+// Fills the page with what makes it wide: the map list with its Delete button, the sun marked on the
+// map, a prefiltered chain's strip of seven levels, a render wider than a phone still running (its
+// Cancel button in the job list), a side-by-side pair, messages beside fields.
 async function fillPage() {
   await page.locator('#map-list tr[data-id=forest] button').waitFor();
+  await page.locator('#sun-find').click();
+  await page.locator('#sun-marker').waitFor();
+  await prefilterChain(page, { levels: 7, base_size: 128, samples: 16 });
+  await page.locator('#prefilter-strip figure[data-level="6"] img[src]').waitFor();
   const running = await renderSphere(page, { width: 640, height: 480, spp: 65536, status: 'running' });
   await waitForImage(page, '#render-image', 640);
   const form = page.locator('#render-form');

@@ -134,6 +134,32 @@ export async function screenshot(page, name, { wholePage = false } = {}) {
   await page.setViewportSize(viewport);
 }
 
+// Saves one element (a panel) as NAME.png in the screenshot directory, the sticky header kept off it.
+export async function elementScreenshot(page, selector, name) {
+  mkdirSync(screenshots, { recursive: true });
+  await page.locator(selector).screenshot({ path: path.join(screenshots, `${name}.png`), style: '.top { position: static !important; }', animations: 'disabled' });
+}
+
+// Types values into the named fields of a form: fillForm(page, '#prefilter-form', { levels: 3 }).
+export async function fillForm(page, form, values) {
+  for (const [name, value] of Object.entries(values)) await page.locator(`${form} [name=${name}]`).fill(String(value));
+}
+
+// A prefiltered chain of the selected map through the IBL panel, followed to `status` (done by
+// default); its job id.
+export async function prefilterChain(page, { format = 'ktx2', status = 'done', ...numbers }) {
+  await fillForm(page, '#prefilter-form', numbers);
+  await page.locator('#prefilter-form [name=format]').selectOption(format);
+  const [answer] = await Promise.all([
+    page.waitForResponse((r) => r.request().method() === 'POST' && new URL(r.url()).pathname.endsWith('/prefilter')),
+    page.locator('#prefilter-submit').click(),
+  ]);
+  assert.equal(answer.status(), 202);
+  const { id } = await answer.json();
+  await page.locator(`#prefilter-status[data-status=${status}]`, { hasText: id }).waitFor({ timeout: 30000 });
+  return id;
+}
+
 export const isRenderPost = (request) => request.method() === 'POST' && new URL(request.url()).pathname === '/api/v1/renders';
 
 // A small render of the sphere through the render panel, followed to `status` (done by default).

@@ -49,6 +49,11 @@ export function offerLinks(bar, name, urls) {
     el('a', { href, download: `${name}.${format}`, dataset: { format } }, format.toUpperCase())));
 }
 
+// Links in `bar` to the files a job lists ([{name, url}]), each saved under its own name.
+export function offerFiles(bar, files) {
+  fill(bar, files.map((f) => el('a', { href: f.url, download: f.name, dataset: { format: f.name.split('.').pop() } }, f.name)));
+}
+
 // Buttons in `bar` saving `records` (an array of objects) as NAME.json and NAME.csv.
 export function offerTable(bar, name, records) {
   const button = (format, type, text) =>

@@ -6,6 +6,8 @@ import { initMaps, refreshMaps } from './maps.js';
 import { initSampling } from './sampling.js';
 import { initMedianCut } from './median_cut.js';
 import { initIbl } from './ibl.js';
+import { initPrefilter } from './prefilter.js';
+import { initSun } from './sun.js';
 import { initFresnel } from './fresnel.js';
 import { initRenders } from './renders.js';
 import { initHealth } from './health.js';
@@ -31,9 +33,11 @@ function initMapSelect() {
 
 initMapSelect();
 initMaps();
+initSun();
 initSampling();
 initMedianCut();
 initIbl();
+initPrefilter();
 initFresnel();
 initRenders();
 initHealth();

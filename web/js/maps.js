@@ -4,6 +4,7 @@ import { $, el, num, rgb, busy, debounce, showError, latestOnly, fillTable } fro
 import { state, on, setMaps, selectMap, currentMap } from './state.js';
 import { offerLinks, offerTable } from './downloads.js';
 import { checkFields } from './field_errors.js';
+import { apiDocument, queryParameter, offerChoices } from './openapi.js';
 
 const panel = () => $('#maps-panel');
 
@@ -63,18 +64,31 @@ function renderMeta() {
   meta.replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
 }
 
+// The map in the chosen projection (lat-long as held, or resampled by the server).
 const showPreview = latestOnly(async (current) => {
   if (!state.map) return;
   const exposure = $('#map-exposure').valueAsNumber;
   $('#map-exposure-value').textContent = exposure > 0 ? `+${exposure}` : String(exposure);
+  const projection = $('#map-projection').value || 'latlong';
   const id = state.map;
   const path = `/envmaps/${encodeURIComponent(id)}/image`;
-  const png = apiUrl(path, { format: 'png', exposure });
+  const png = apiUrl(path, { format: 'png', exposure, projection });
   await busy(panel(), async () => {
     await loadImage($('#map-image'), png, current);
-    if (current()) offerLinks($('#map-image-downloads'), id, { png, exr: apiUrl(path, { format: 'exr' }) });
+    if (!current()) return;
+    $('#map-view').dataset.projection = projection;
+    const name = projection === 'latlong' ? id : `${id}-${projection}`;
+    offerLinks($('#map-image-downloads'), name, { png, exr: apiUrl(path, { format: 'exr', projection }) });
   });
 });
+
+// The projections the image endpoint offers, named as its document names them.
+async function offerProjections() {
+  await busy(panel(), async () => {
+    const doc = await apiDocument();
+    offerChoices($('#map-projection'), queryParameter(doc, '/envmaps/{id}/image', 'projection'));
+  });
+}
 
 // A file name's stem, made a valid map name.
 const nameFromFile = (file) => file.name.replace(/\.[^.]*$/, '').replace(/[^A-Za-z0-9._-]/g, '_').replace(/^\./, '_').slice(0, 64);
@@ -100,6 +114,8 @@ export function initMaps() {
   on('maps', (maps) => { renderList(maps); renderMeta(); });
   on('map', () => { renderList(state.maps); renderMeta(); showPreview(); });
   $('#map-exposure').addEventListener('input', debounce(() => showPreview(), 120));
+  $('#map-projection').addEventListener('change', () => showPreview());
+  offerProjections();
   $('#upload-file').addEventListener('change', () => {
     const file = $('#upload-file').files[0];
     if (file && !$('#upload-name').value) $('#upload-name').value = nameFromFile(file);

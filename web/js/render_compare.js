@@ -3,8 +3,8 @@
 import { api, apiUrl, loadImage } from './api.js';
 import { $, el, num } from './dom.js';
 import { offerLinks } from './downloads.js';
+import { ACTIVE } from './jobs.js';
 
-const ACTIVE = new Set(['queued', 'running']);
 const LABELS = { mipmaps: 'mipmaps', normal_maps: 'normal maps' };
 
 let comparison = 0; // the latest comparison; an older one stops updating the page

@@ -7,9 +7,9 @@ import { state } from './state.js';
 import { compareRenders, renderImageUrls } from './render_compare.js';
 import { offerLinks, offerTable, withdrawOffer } from './downloads.js';
 import { checkFields } from './field_errors.js';
+import { ACTIVE, showProgress } from './jobs.js';
 
 const panel = () => $('#renders-panel');
-const ACTIVE = new Set(['queued', 'running']);
 
 let watched = null; // {id, source, poll, shownSpp}
 
@@ -46,15 +46,7 @@ function showJob(job) {
   if (!watched || watched.id !== job.id) return;
   // A late answer (the DELETE's "cancelling") must not undo the end the event stream already told.
   if (watched.ended && ACTIVE.has(job.status)) return;
-  const done = job.status === 'done';
-  const percent = Math.round((done ? 1 : job.progress) * 1000) / 10;
-  const bar = $('#render-progress');
-  bar.style.width = `${percent}%`;
-  bar.className = job.status;
-  const cancelling = job.cancel_requested && ACTIVE.has(job.status) ? ' (cancelling)' : '';
-  $('#render-status').textContent = `${job.id} · ${job.status}${cancelling} · ${percent}%`;
-  $('#render-status').dataset.status = job.status;
-  $('#render-cancel').disabled = !ACTIVE.has(job.status) || job.cancel_requested;
+  showProgress(job, { bar: $('#render-progress'), status: $('#render-status'), cancel: $('#render-cancel') });
   const items = [
     ['passes', `${job.spp_done} / ${job.spp} spp`],
     ['time', `${num(job.elapsed_s, 3)} s`],
