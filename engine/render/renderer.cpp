@@ -53,6 +53,28 @@ class FlushDenormals {
 #endif
 };
 
+// Runs `render(tile)` for every tile in parallel, then `on_tile`; false if `cancel` became true (checked
+// before each tile, so some were skipped).
+template <class Render>
+bool for_each_tile(int tiles, const std::atomic<bool>& cancel, const std::function<void()>& on_tile,
+                   Render&& render) {
+  std::atomic<bool> skipped{false};
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, tiles, 1),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int t = range.begin(); t != range.end(); ++t) {
+          if (cancel.load(std::memory_order_relaxed)) {
+            skipped.store(true, std::memory_order_relaxed);
+            continue;
+          }
+          render(t);
+          if (on_tile) on_tile();
+        }
+      },
+      tbb::simple_partitioner());
+  return !skipped.load();
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -79,7 +101,10 @@ struct Renderer::Impl {
     return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll;
   }
 
-  void render_tile(int tile, uint32_t first_sample, int spp) {
+  // Renders `spp` samples from `first_sample` of every pixel of the tile, handing each pixel's sum to
+  // `store(x, y, sum)`.
+  template <class Store>
+  void render_tile(int tile, uint32_t first_sample, int spp, Store&& store) {
     const FlushDenormals ftz;
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
     const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
@@ -95,7 +120,7 @@ struct Renderer::Impl {
           const Rgb l = integrator.radiance(ray, sampler, tile_rays);
           if (finite(l)) sum += l;  // a numerical failure must not poison the image
         }
-        film.set_pass_sum(x, y, sum);
+        store(x, y, sum);
       }
     }
     samples.fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0) * uint64_t(spp), std::memory_order_relaxed);
@@ -133,23 +158,29 @@ int Renderer::tile_count() const {
 bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_pass: spp must be >= 1");
   const uint32_t first = uint32_t(impl_->film.spp());
-  std::atomic<bool> skipped{false};
-  tbb::parallel_for(
-      tbb::blocked_range<int>(0, tile_count(), 1),
-      [&](const tbb::blocked_range<int>& range) {
-        for (int t = range.begin(); t != range.end(); ++t) {
-          if (cancel.load(std::memory_order_relaxed)) {
-            skipped.store(true, std::memory_order_relaxed);
-            continue;
-          }
-          impl_->render_tile(t, first, spp);
-          if (on_tile) on_tile();
-        }
-      },
-      tbb::simple_partitioner());
-  if (skipped.load()) return false;
-  impl_->film.merge_pass(spp);
+  Film& film = impl_->film;
+  const bool finished = for_each_tile(tile_count(), cancel, on_tile, [&](int t) {
+    impl_->render_tile(t, first, spp, [&film](int x, int y, Rgb sum) { film.set_pass_sum(x, y, sum); });
+  });
+  if (!finished) return false;
+  film.merge_pass(spp);
   return true;
+}
+
+std::optional<RangePartial> Renderer::render_range(SampleRange range, const std::atomic<bool>& cancel,
+                                                   const std::function<void()>& on_tile) {
+  if (range.end <= range.first) throw Error(ErrorKind::InvalidArgument, "render_range: an empty range");
+  const uint64_t rays_before = impl_->rays.load();
+  RangePartial out{range, 0, PartialFilm(impl_->settings.width, impl_->settings.height)};
+  const auto store = [&out, range](int x, int y, Rgb sum) {
+    out.film.add(x, y, sum, uint32_t(range.count()));
+  };
+  const bool finished = for_each_tile(tile_count(), cancel, on_tile, [&](int t) {
+    impl_->render_tile(t, range.first, range.count(), store);
+  });
+  if (!finished) return std::nullopt;
+  out.rays = impl_->rays.load() - rays_before;
+  return out;
 }
 
 void Renderer::resume(const Image& mean, int spp) {

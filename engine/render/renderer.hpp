@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
+#include "engine/render/partial_film_codec.hpp"
 #include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
@@ -33,6 +35,14 @@ class Renderer {
   // `on_tile` after each finished tile (from worker threads). Returns false if `cancel` became true
   // (the pass is then incomplete and not added to the image).
   bool render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
+
+  // Renders the samples [range.first, range.end) of every pixel into a partial film of their own (the
+  // image and spp_done() stay as they are): the samples a run of passes draws at those indices, so
+  // partials of a render's ranges merge into its image. May run while no pass runs; not concurrently
+  // with another range. nullopt if `cancel` became true (checked per tile). rays counts this range's
+  // rays only when no other range or pass runs meanwhile.
+  std::optional<RangePartial> render_range(SampleRange range, const std::atomic<bool>& cancel,
+                                           const std::function<void()>& on_tile = {});
 
   // Continues an earlier run of the same scene and settings from its mean image over `spp` samples
   // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.

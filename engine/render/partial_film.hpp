@@ -1,0 +1,56 @@
+#pragma once
+// The samples of a range [first, end) of a render's per-pixel sample indices: per pixel the linear RGB sum
+// and the count of samples, never tone mapped. Partials of disjoint ranges merge exactly (sum of sums, sum
+// of counts, in double), so merging the ranges of a render in any order gives the image one process
+// renders, within float rounding. A render split over machines sends these.
+#include <cstdint>
+#include <vector>
+
+#include "engine/image/image.hpp"
+
+namespace lp::render {
+
+struct SampleRange {
+  uint32_t first = 0, end = 0;  // sample indices [first, end)
+  int count() const { return int(end - first); }
+  bool operator==(const SampleRange&) const = default;
+};
+
+class PartialFilm {
+ public:
+  PartialFilm() = default;
+  PartialFilm(int width, int height);
+  // The bytes a partial of width x height pixels holds.
+  static int64_t memory_bytes(int64_t width, int64_t height) {
+    return width * height * int64_t(3 * sizeof(double) + sizeof(uint32_t));
+  }
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  size_t pixel_count() const { return counts_.size(); }
+
+  // The sum of `count` samples of pixel (x, y), added to what the pixel holds.
+  void add(int x, int y, Rgb sum, uint32_t count) { add(size_t(y) * size_t(width_) + size_t(x), sum, count); }
+  void add(size_t pixel, Rgb sum, uint32_t count) {
+    double* s = &sums_[pixel * 3];
+    s[0] += sum.x, s[1] += sum.y, s[2] += sum.z;
+    counts_[pixel] += count;
+  }
+  // Adds another partial of the same size (throws lp::Error InvalidArgument otherwise).
+  void merge(const PartialFilm& other);
+
+  Rgb sum(size_t pixel) const {
+    return {float(sums_[pixel * 3]), float(sums_[pixel * 3 + 1]), float(sums_[pixel * 3 + 2])};
+  }
+  const double* sums() const { return sums_.data(); }
+  uint32_t count(size_t pixel) const { return counts_[pixel]; }
+  // The mean of every pixel (black where no sample arrived yet).
+  Image mean() const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<double> sums_;
+  std::vector<uint32_t> counts_;
+};
+
+}  // namespace lp::render
