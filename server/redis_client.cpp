@@ -1,0 +1,211 @@
+#include "server/redis_client.hpp"
+
+#include <fmt/format.h>
+#include <hiredis/hiredis.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <thread>
+
+namespace lp::server {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using namespace std::chrono_literals;
+
+constexpr auto kConnectTimeout = 2s;
+// Longer than any BLOCK the callers ask for, so a blocked read is not taken for a lost connection.
+constexpr auto kCommandTimeout = 15s;
+constexpr auto kFirstBackoff = 100ms, kMaxBackoff = 2000ms;
+
+timeval to_timeval(std::chrono::milliseconds d) {
+  return {static_cast<time_t>(d.count() / 1000), static_cast<suseconds_t>(d.count() % 1000 * 1000)};
+}
+
+RedisReply copy(const redisReply& r) {
+  RedisReply out;
+  switch (r.type) {
+    case REDIS_REPLY_INTEGER:
+      out.type = RedisReply::Type::Integer;
+      out.integer = r.integer;
+      break;
+    case REDIS_REPLY_STRING:
+    case REDIS_REPLY_STATUS:
+      out.type = r.type == REDIS_REPLY_STRING ? RedisReply::Type::String : RedisReply::Type::Status;
+      out.text.assign(r.str, r.len);
+      break;
+    case REDIS_REPLY_ARRAY:
+      out.type = RedisReply::Type::Array;
+      for (size_t i = 0; i < r.elements; ++i) out.elements.push_back(copy(*r.element[i]));
+      break;
+    default:
+      break;
+  }
+  return out;
+}
+
+std::string ms(std::chrono::milliseconds d) {
+  return std::to_string(d.count());
+}
+
+}  // namespace
+
+RedisClient::RedisClient(RedisAddress address, std::chrono::milliseconds retry_for)
+    : address_(std::move(address)), retry_for_(retry_for), context_(nullptr, redisFree) {}
+
+RedisClient::~RedisClient() = default;
+
+void RedisClient::connect() {
+  context_.reset(redisConnectWithTimeout(address_.host.c_str(), address_.port, to_timeval(kConnectTimeout)));
+  if (!context_) throw RedisError("cannot allocate a Redis connection");
+  if (context_->err) {
+    const std::string why = context_->errstr;
+    context_.reset();
+    throw RedisError(fmt::format("cannot connect to {}: {}", address_.url(), why));
+  }
+  redisSetTimeout(context_.get(), to_timeval(kCommandTimeout));
+  redisEnableKeepAlive(context_.get());
+}
+
+// The reply, nullopt when the connection failed (then dropped); throws RedisError for an error reply
+// other than LOADING (Redis reading its append-only file after a restart: try again).
+std::optional<RedisReply> RedisClient::try_command(const std::vector<std::string_view>& args) {
+  if (!context_) connect();
+  std::vector<const char*> argv;
+  std::vector<size_t> lengths;
+  for (const auto a : args) {
+    argv.push_back(a.data());
+    lengths.push_back(a.size());
+  }
+  auto* raw = static_cast<redisReply*>(
+      redisCommandArgv(context_.get(), int(argv.size()), argv.data(), lengths.data()));
+  if (!raw) {
+    spdlog::debug("redis {}: {}", address_.url(), context_->errstr);
+    context_.reset();
+    return std::nullopt;
+  }
+  const std::unique_ptr<redisReply, void (*)(void*)> reply(raw, freeReplyObject);
+  if (reply->type == REDIS_REPLY_ERROR) {
+    const std::string message(reply->str, reply->len);
+    if (message.starts_with("LOADING")) return std::nullopt;
+    throw RedisError(fmt::format("redis {}: {}", args.empty() ? "" : std::string(args[0]), message));
+  }
+  return copy(*reply);
+}
+
+RedisReply RedisClient::command(const std::vector<std::string_view>& args) {
+  std::lock_guard lock(mutex_);
+  const auto deadline = Clock::now() + retry_for_;
+  auto backoff = std::chrono::milliseconds(kFirstBackoff);
+  std::string last_failure = "no answer";
+  for (;;) {
+    try {
+      if (auto reply = try_command(args)) return std::move(*reply);
+    } catch (const RedisError& e) {
+      if (context_) throw;  // an error reply: the command itself failed
+      last_failure = e.what();
+    }
+    if (Clock::now() + backoff > deadline)
+      throw RedisError(fmt::format("redis {} unreachable for {} s: {}", address_.url(),
+                                   std::chrono::duration_cast<std::chrono::seconds>(retry_for_).count(),
+                                   last_failure));
+    std::this_thread::sleep_for(backoff);
+    backoff = std::min<std::chrono::milliseconds>(2 * backoff, kMaxBackoff);
+  }
+}
+
+void RedisClient::set(std::string_view key, std::string_view value, std::optional<int> expire_s) {
+  if (expire_s)
+    command({"SET", key, value, "EX", std::to_string(*expire_s)});
+  else
+    command({"SET", key, value});
+}
+
+std::optional<std::string> RedisClient::get(std::string_view key) {
+  auto r = command({"GET", key});
+  return r.nil() ? std::nullopt : std::optional(std::move(r.text));
+}
+
+bool RedisClient::exists(std::string_view key) {
+  return command({"EXISTS", key}).integer > 0;
+}
+
+void RedisClient::del(const std::vector<std::string_view>& keys) {
+  std::vector<std::string_view> args{"DEL"};
+  args.insert(args.end(), keys.begin(), keys.end());
+  command(args);
+}
+
+void RedisClient::hset(std::string_view key, std::string_view field, std::string_view value) {
+  command({"HSET", key, field, value});
+}
+
+std::optional<std::string> RedisClient::hget(std::string_view key, std::string_view field) {
+  auto r = command({"HGET", key, field});
+  return r.nil() ? std::nullopt : std::optional(std::move(r.text));
+}
+
+void RedisClient::hdel(std::string_view key, std::string_view field) {
+  command({"HDEL", key, field});
+}
+
+void RedisClient::sadd(std::string_view key, std::string_view member) {
+  command({"SADD", key, member});
+}
+
+void RedisClient::srem(std::string_view key, std::string_view member) {
+  command({"SREM", key, member});
+}
+
+std::vector<std::string> RedisClient::smembers(std::string_view key) {
+  std::vector<std::string> out;
+  for (auto& e : command({"SMEMBERS", key}).elements) out.push_back(std::move(e.text));
+  return out;
+}
+
+std::string RedisClient::xadd(std::string_view key,
+                              const std::vector<std::pair<std::string, std::string>>& fields) {
+  std::vector<std::string_view> args{"XADD", key, "*"};
+  for (const auto& [name, value] : fields) {
+    args.push_back(name);
+    args.push_back(value);
+  }
+  return command(args).text;
+}
+
+void RedisClient::xgroup_create(std::string_view key, std::string_view group) {
+  try {
+    command({"XGROUP", "CREATE", key, group, "0", "MKSTREAM"});
+  } catch (const RedisError& e) {
+    if (std::string_view(e.what()).find("BUSYGROUP") == std::string_view::npos) throw;
+  }
+}
+
+std::vector<StreamEntry> RedisClient::xreadgroup(std::string_view group, std::string_view consumer,
+                                                 const std::vector<std::string>& keys,
+                                                 std::chrono::milliseconds block) {
+  const std::string block_ms = ms(block);
+  std::vector<std::string_view> args{"XREADGROUP", "GROUP", group,    consumer, "COUNT",
+                                     "1",          "BLOCK", block_ms, "STREAMS"};
+  args.insert(args.end(), keys.begin(), keys.end());
+  for (size_t i = 0; i < keys.size(); ++i) args.push_back(">");
+  return stream_entries(command(args));
+}
+
+std::vector<StreamEntry> RedisClient::xread(std::string_view key, std::string_view after,
+                                            std::chrono::milliseconds block) {
+  return stream_entries(command({"XREAD", "BLOCK", ms(block), "STREAMS", key, after}));
+}
+
+void RedisClient::xack(std::string_view key, std::string_view group, std::string_view id) {
+  command({"XACK", key, group, id});
+}
+
+std::vector<StreamEntry> RedisClient::xautoclaim(std::string_view key, std::string_view group,
+                                                 std::string_view consumer,
+                                                 std::chrono::milliseconds min_idle) {
+  return claimed_entries(std::string(key),
+                         command({"XAUTOCLAIM", key, group, consumer, ms(min_idle), "0-0", "COUNT", "1"}));
+}
+
+}  // namespace lp::server

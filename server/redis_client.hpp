@@ -1,0 +1,78 @@
+#pragma once
+// A connection to Redis over hiredis, with the commands a render split over machines needs. A lost
+// connection (Redis restarting, a network blip) is opened again with backoff (0.1 s doubling to 2 s) and
+// the command sent again, for up to `retry_for`; then RedisError. Commands that may run twice this way are
+// harmless twice in how they are used (a partial is keyed by its range, notices are deduplicated).
+// Thread-safe (one command at a time).
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "server/redis_reply.hpp"
+#include "server/redis_url.hpp"
+
+struct redisContext;
+
+namespace lp::server {
+
+// Redis could not be reached for `retry_for`, or answered a command with an error.
+class RedisError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class RedisClient {
+ public:
+  explicit RedisClient(RedisAddress address, std::chrono::milliseconds retry_for = std::chrono::seconds(60));
+  ~RedisClient();
+  RedisClient(const RedisClient&) = delete;
+  RedisClient& operator=(const RedisClient&) = delete;
+
+  const RedisAddress& address() const { return address_; }
+
+  // Any command, its arguments binary safe. Throws RedisError for an error reply.
+  RedisReply command(const std::vector<std::string_view>& args);
+
+  void set(std::string_view key, std::string_view value, std::optional<int> expire_s = std::nullopt);
+  std::optional<std::string> get(std::string_view key);
+  bool exists(std::string_view key);
+  void del(const std::vector<std::string_view>& keys);
+  void hset(std::string_view key, std::string_view field, std::string_view value);
+  std::optional<std::string> hget(std::string_view key, std::string_view field);
+  void hdel(std::string_view key, std::string_view field);
+  void sadd(std::string_view key, std::string_view member);
+  void srem(std::string_view key, std::string_view member);
+  std::vector<std::string> smembers(std::string_view key);
+
+  // XADD key * field value ...; the new entry's id.
+  std::string xadd(std::string_view key, const std::vector<std::pair<std::string, std::string>>& fields);
+  // XGROUP CREATE key group 0 MKSTREAM; a group that exists already is left as it is.
+  void xgroup_create(std::string_view key, std::string_view group);
+  // XREADGROUP GROUP group consumer COUNT 1 BLOCK block STREAMS keys... > ...
+  std::vector<StreamEntry> xreadgroup(std::string_view group, std::string_view consumer,
+                                      const std::vector<std::string>& keys, std::chrono::milliseconds block);
+  // XREAD BLOCK block STREAMS key after: the entries after id `after`.
+  std::vector<StreamEntry> xread(std::string_view key, std::string_view after,
+                                 std::chrono::milliseconds block);
+  void xack(std::string_view key, std::string_view group, std::string_view id);
+  // XAUTOCLAIM key group consumer min_idle 0-0 COUNT 1: an entry another consumer has held for `min_idle`.
+  std::vector<StreamEntry> xautoclaim(std::string_view key, std::string_view group, std::string_view consumer,
+                                      std::chrono::milliseconds min_idle);
+
+ private:
+  void connect();  // throws RedisError
+  std::optional<RedisReply> try_command(const std::vector<std::string_view>& args);
+
+  const RedisAddress address_;
+  const std::chrono::milliseconds retry_for_;
+  std::mutex mutex_;
+  std::unique_ptr<redisContext, void (*)(redisContext*)> context_;
+};
+
+}  // namespace lp::server
