@@ -236,7 +236,9 @@ const std::vector<const IntParameter*>& int_parameters() {
                                                        &kIoTimeoutS,
                                                        &kKeepAliveTimeoutS,
                                                        &kShutdownGraceS,
-                                                       &kAccessLogSample};
+                                                       &kAccessLogSample,
+                                                       &kRedisItemSpp,
+                                                       &kRedisClaimTimeoutS};
   return all;
 }
 

@@ -152,6 +152,21 @@ inline constexpr IntParameter kAccessLogSample{
     "level",
     Owner::Server};
 
+// A render split over machines through Redis (--redis).
+inline constexpr IntParameter kRedisItemSpp{
+    "redis-item-spp",
+    16,
+    {1, 1 << 24},
+    "samples per pixel of one work item of a render split over Redis (a 256x256 preset\nscene: about a "
+    "second of one core)",
+    Owner::Server};
+inline constexpr IntParameter kRedisClaimTimeoutS{
+    "redis-claim-timeout-s",
+    30,
+    {1, 86400},
+    "seconds a worker may hold a work item before another worker takes it over (a worker\nthat died)",
+    Owner::Server};
+
 // Every integer flag, in --help order.
 const std::vector<const IntParameter*>& int_parameters();
 

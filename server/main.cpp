@@ -15,6 +15,7 @@
 #include "server/envmap_loading.hpp"
 #include "server/health_check.hpp"
 #include "server/logging.hpp"
+#include "server/render_worker.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
 #include "server/stored_assets.hpp"
@@ -129,6 +130,9 @@ int main(int argc, char** argv) {
   }
   int port = 0;
   if (!prepare(app, server, port)) return 1;
+  if (app.options.advertise_url.empty())
+    app.options.advertise_url = fmt::format("http://{}:{}", options->host, port);
+  std::optional<lp::server::RenderWorker> worker;  // with --redis, unless --role api
 
   std::promise<void> run_returned;
   auto signals = stop_on_signal(stop_signals, app, server, run_returned.get_future().share());
@@ -136,6 +140,8 @@ int main(int argc, char** argv) {
   std::atomic<bool> loaded{false}, failed{false};
   std::thread loading([&] {
     failed = !load(app);
+    if (!failed && app.options.redis && app.options.role != lp::server::ServerRole::Api)
+      worker.emplace(app, lp::server::worker_name());
     loaded = true;
     if (failed) pthread_kill(signals.native_handle(), SIGTERM);  // stops the server, exit status 1
   });

@@ -80,6 +80,16 @@ void set_render_priority(Options& o, const std::string& v) {
   o.render_priority = enum_value<RenderPriority>("render-priority", v);
 }
 
+void set_role(Options& o, const std::string& v) {
+  o.role = enum_value<ServerRole>("role", v);
+}
+
+// A server of one role only splits jobs with others, through Redis.
+void check_role(const Options& o) {
+  if (o.role != ServerRole::Both && !o.redis)
+    throw std::invalid_argument(fmt::format("--role {} needs --redis redis://HOST:PORT", enum_name(o.role)));
+}
+
 const std::vector<TextFlag>& text_flags() {
   static const std::vector<TextFlag> flags = {
       {"host", "ADDR", "address to listen on (default 127.0.0.1)", false,
@@ -118,6 +128,18 @@ const std::vector<TextFlag>& text_flags() {
        false, set_render_priority},
       {"resume-interrupted", nullptr, "at start, resume the renders a crash or a stop interrupted", false,
        [](Options& o, const std::string&) { o.resume_interrupted = true; }},
+      {"redis", "URL",
+       "redis://HOST[:PORT]: split renders into work items of sample ranges on Redis\nStreams, rendered by "
+       "every server of that Redis (see --role)",
+       false, [](Options& o, const std::string& v) { o.redis = parse_redis_url(v); }},
+      {"role", "NAME",
+       enum_names_joined<ServerRole>("|") +
+           " with --redis: accept renders and merge their items, render items, or\nboth (default both)",
+       false, set_role},
+      {"advertise-url", "URL",
+       "with --redis, where workers fetch this server's maps (default\nhttp://HOST:PORT of --host and the "
+       "port)",
+       false, [](Options& o, const std::string& v) { o.advertise_url = v; }},
       {"log-level", "NAME", "least severe messages written: " + log_level_names() + " (default info)", false,
        [](Options& o, const std::string& v) { o.log_level = parse_log_level(v); }},
       {"log-format", "NAME",
@@ -180,6 +202,8 @@ const std::vector<IntFlag>& int_flags() {
       option<&Options::keep_alive_timeout_s>(api::kKeepAliveTimeoutS),
       option<&Options::shutdown_grace_s>(api::kShutdownGraceS),
       option<&Options::access_log_sample>(api::kAccessLogSample),
+      option<&Options::redis_item_spp>(api::kRedisItemSpp),
+      option<&Options::redis_claim_timeout_s>(api::kRedisClaimTimeoutS),
   };
   return flags;
 }
@@ -382,6 +406,7 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults,
     if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == &f; }))
       set_from_environment(o, f, environment);
   for (const auto& [flag, value] : given) flag->set(o, value);
+  check_role(o);
   return o;
 }
 

@@ -12,7 +12,9 @@
 
 #include "api/parameters.hpp"
 #include "server/log_format.hpp"
+#include "server/redis_url.hpp"
 #include "server/render_thread_priority.hpp"
+#include "server/server_role.hpp"
 
 namespace lp::server {
 
@@ -62,6 +64,12 @@ struct Options {
   std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
   bool resume_interrupted = false;                       // resume interrupted renders at start
   int shutdown_grace_s = int(api::kShutdownGraceS.fallback);
+  // Renders split over machines through Redis (server/scale_out.hpp).
+  std::optional<RedisAddress> redis;  // --redis; none: renders run in this process
+  ServerRole role = ServerRole::Both;
+  std::string advertise_url;  // where workers fetch maps from this server; empty: http://--host:port
+  int redis_item_spp = int(api::kRedisItemSpp.fallback);
+  int redis_claim_timeout_s = int(api::kRedisClaimTimeoutS.fallback);
 };
 
 // Reads the token of --auth-token-file, if set, into auth_token; throws std::invalid_argument if it cannot.

@@ -9,6 +9,7 @@
 
 #include "engine/image/image_io.hpp"
 #include "server/envmap_fingerprint.hpp"
+#include "server/render_coordinator.hpp"
 
 namespace lp::server {
 
@@ -103,15 +104,14 @@ void RenderJob::delete_state() const {
   if (!image_file_.empty()) store_->remove(store_->renders_dir() / image_file_);
 }
 
-void RenderJob::publish(const render::Renderer& renderer, double render_s) {
-  auto image = std::make_shared<const Image>(renderer.image());
-  const auto stats = renderer.stats();
+void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, double render_s) {
+  auto image = std::make_shared<const Image>(std::move(pixels));
   std::lock_guard lock(mutex_);
   if (counters_)
     counters_->add(earlier_stats_.samples + stats.samples - stats_.samples,
                    earlier_stats_.rays + stats.rays - stats_.rays, earlier_render_s_ + render_s - render_s_);
   image_ = std::move(image);
-  spp_done_ = renderer.spp_done();
+  spp_done_ = spp_done;
   stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};
   render_s_ = earlier_render_s_ + render_s;
 }
@@ -148,7 +148,6 @@ int RenderJob::skip_done_passes(std::vector<int>& passes) const {
 }
 
 bool RenderJob::run() {
-  using Clock = std::chrono::steady_clock;
   const auto& s = request_.settings;
   spdlog::info("render {} started: {}x{}, {} spp, depth {}, envmap '{}', {}, lighting {}", id(), s.width,
                s.height, s.spp, s.max_depth, request_.envmap,
@@ -160,25 +159,9 @@ bool RenderJob::run() {
     spdlog::info("render {} {} after {:.2f} s ({} spp done)", id(), how, elapsed_s(), spp_done());
   };
   try {
-    render::Renderer renderer(request_.scene, request_.lighting, s, envmap_);
-    auto passes = pass_schedule(s.spp);
-    const int earlier_spp = skip_done_passes(passes);
-    if (earlier_spp > 0) {
-      renderer.resume(*image().image, earlier_spp);
-      spdlog::info("render {} continues after {} spp", id(), earlier_spp);
-    }
-    const int64_t tiles = renderer.tile_count();
-    set_work(tiles * s.spp, tiles * earlier_spp);
-    save_record();
-    const auto start = Clock::now();
-    for (const int pass : passes) {
-      if (interrupt_requested() ||
-          !renderer.render_pass(pass, cancel_flag(), [this, pass] { add_work_done(pass); })) {
-        release(interrupt_requested() ? "interrupted" : "cancelled");
-        return false;
-      }
-      publish(renderer, std::chrono::duration<double>(Clock::now() - start).count());
-      checkpoint();
+    if (!(scale_out_ ? render_split() : render_here())) {
+      release(interrupt_requested() ? "interrupted" : "cancelled");
+      return false;
     }
   } catch (const std::exception& e) {
     release("failed");
@@ -187,6 +170,56 @@ bool RenderJob::run() {
   }
   release("done");
   return true;
+}
+
+bool RenderJob::render_here() {
+  using Clock = std::chrono::steady_clock;
+  const auto& s = request_.settings;
+  render::Renderer renderer(request_.scene, request_.lighting, s, envmap_);
+  auto passes = pass_schedule(s.spp);
+  const int earlier_spp = skip_done_passes(passes);
+  if (earlier_spp > 0) {
+    renderer.resume(*image().image, earlier_spp);
+    spdlog::info("render {} continues after {} spp", id(), earlier_spp);
+  }
+  const int64_t tiles = renderer.tile_count();
+  set_work(tiles * s.spp, tiles * earlier_spp);
+  save_record();
+  const auto start = Clock::now();
+  for (const int pass : passes) {
+    if (interrupt_requested() ||
+        !renderer.render_pass(pass, cancel_flag(), [this, pass] { add_work_done(pass); }))
+      return false;
+    publish(renderer.image(), renderer.spp_done(), renderer.stats(),
+            std::chrono::duration<double>(Clock::now() - start).count());
+    checkpoint();
+  }
+  return true;
+}
+
+// Work items on Redis; the image of the ranges merged so far is published as they arrive. A split render
+// keeps its image in the state store once done (a continued run starts again).
+bool RenderJob::render_split() {
+  using Clock = std::chrono::steady_clock;
+  const auto& s = request_.settings;
+  set_work(s.spp, 0);
+  save_record();
+  RenderCoordinator coordinator(*scale_out_, id());
+  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url};
+  const auto start = Clock::now();
+  int spp_done = 0;
+  render::RenderStats stats;
+  const bool done = coordinator.run(
+      description, s, [this] { return interrupt_requested() || cancel_flag().load(); },
+      [&](const render::PartialFilm& merged, render::SampleRange range, uint64_t rays) {
+        spp_done += range.count();
+        stats.samples += uint64_t(range.count()) * merged.pixel_count();
+        stats.rays += rays;
+        add_work_done(range.count());
+        publish(merged.mean(), spp_done, stats, std::chrono::duration<double>(Clock::now() - start).count());
+      });
+  if (done) checkpoint();
+  return done;
 }
 
 void RenderJob::describe(nlohmann::json& out) const {

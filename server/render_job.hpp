@@ -14,6 +14,7 @@
 #include "server/job.hpp"
 #include "server/render_counters.hpp"
 #include "server/render_record.hpp"
+#include "server/scale_out.hpp"
 #include "server/state_store.hpp"
 
 namespace lp::server {
@@ -46,6 +47,9 @@ class RenderJob : public Job {
   void hold_memory(MemoryReservation memory) { memory_ = std::move(memory); }
   // The server's counters the job adds each finished pass to. Set before the job is submitted.
   void count_in(RenderCounters* counters) { counters_ = counters; }
+  // Splits the render into work items on Redis (render_coordinator.hpp) instead of rendering it here.
+  // Set before the job is submitted.
+  void split_over(std::optional<ScaleOut> scale_out) { scale_out_ = std::move(scale_out); }
 
   void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
   void save_record(JobStatus status, const std::optional<JobError>& error) const;
@@ -61,7 +65,10 @@ class RenderJob : public Job {
   void forgotten() override { delete_state(); }
 
  private:
-  void publish(const render::Renderer& renderer, double render_s);
+  bool render_here();
+  bool render_split();
+  // The image over `spp_done` samples per pixel, and what this run traced for it in `render_s`.
+  void publish(Image image, int spp_done, render::RenderStats run_stats, double render_s);
   void checkpoint();
   void keep_result_memory();  // the image of the passes done, then the record naming it
   int skip_done_passes(std::vector<int>& passes) const;
@@ -71,6 +78,7 @@ class RenderJob : public Job {
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
   StateStore* const store_;
   RenderCounters* counters_ = nullptr;
+  std::optional<ScaleOut> scale_out_;
   const render::RenderStats earlier_stats_;  // of earlier runs
   const double earlier_render_s_;
 

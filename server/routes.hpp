@@ -23,5 +23,6 @@ void register_brdf_lut_routes(Router& router, App& app);    // the split-sum DFG
 void register_prefilter_routes(Router& router, App& app);   // prefiltered specular chains: jobs, files
 void register_sun_routes(Router& router, App& app);         // sun extraction and its residual map
 void register_metrics_routes(Router& router, App& app);     // GET /metrics (Prometheus)
+void register_content_routes(Router& router, App& app);     // maps by content hash, for Redis workers
 
 }  // namespace lp::server

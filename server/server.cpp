@@ -88,6 +88,7 @@ Server::Server(App& app)
   register_prefilter_routes(router_, app_);
   register_sun_routes(router_, app_);
   register_metrics_routes(router_, app_);
+  register_content_routes(router_, app_);
 }
 
 bool Server::answer_before_routing(const httplib::Request& req, httplib::Response& res) {
