@@ -19,6 +19,7 @@
 
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
+#include "support/poll_until.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 #include "support/white_map.hpp"
@@ -100,19 +101,10 @@ json status(const test::ServerProcess& s, const std::string& id) {
   return r.status == 200 ? r.body_json() : json{{"status", "?"}};
 }
 
-// Polls until `done(status)` holds; fails the test after a generous deadline (not a timing assertion:
-// it only keeps a broken server from hanging the suite).
 template <class Pred>
 json poll(const test::ServerProcess& s, const std::string& id, Pred done) {
-  const auto deadline = std::chrono::steady_clock::now() + 120s;
-  json st;
-  while (std::chrono::steady_clock::now() < deadline) {
-    st = status(s, id);
-    if (done(st)) return st;
-    std::this_thread::sleep_for(20ms);
-  }
-  ADD_FAILURE() << "render " << id << " did not reach the awaited state: " << st.dump();
-  return st;
+  return test::poll_until(
+      "render " + id, [&] { return status(s, id); }, done);
 }
 
 bool finished(const json& st) {

@@ -1,0 +1,230 @@
+// Renders split over machines through Redis Streams: a real redis-server on loopback, a coordinator
+// (--role api) and worker processes (--role worker), each a real lightprobe-server. The split image is
+// compared with the same render by one process without Redis: the same per-pixel samples, so equal
+// within float rounding of the sums (1e-5 relative); a sample counted twice or lost would change it far
+// more, and spp_done and samples say every pixel got exactly spp samples.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/image/image_io.hpp"
+#include "support/poll_until.hpp"
+#include "support/redis_process.hpp"
+#include "support/server_process.hpp"
+#include "support/test_data.hpp"
+
+namespace lp {
+namespace {
+
+using json = nlohmann::json;
+using namespace std::chrono_literals;
+
+constexpr int kSize = 96;
+
+#define SKIP_WITHOUT_REDIS()        \
+  if (!test::redis_server_binary()) \
+  GTEST_SKIP() << "redis-server is not installed (scripts/setup --test installs it)"
+
+std::string body(int spp, int seed, const std::string& envmap = "default") {
+  return json{{"envmap", envmap}, {"scene", {{"preset", "materials"}}},
+              {"width", kSize},   {"height", kSize},
+              {"spp", spp},       {"seed", seed}}
+      .dump();
+}
+
+std::string submit(const test::ServerProcess& s, const std::string& request) {
+  const auto r = s.client()->Post("/api/v1/renders", request, "application/json");
+  EXPECT_TRUE(r && r->status == 202) << (r ? r->body : "no answer");
+  return r && r->status == 202 ? json::parse(r->body)["id"].get<std::string>() : "";
+}
+
+json status(const test::ServerProcess& s, const std::string& id) {
+  const auto r = s.client()->Get("/api/v1/renders/" + id);
+  return r && r->status == 200 ? json::parse(r->body) : json{{"status", "?"}};
+}
+
+template <class Pred>
+json poll(const test::ServerProcess& s, const std::string& id, Pred done) {
+  return test::poll_until(
+      "render " + id, [&] { return status(s, id); }, done);
+}
+
+json wait_finished(const test::ServerProcess& s, const std::string& id) {
+  return poll(s, id, [](const json& st) { return st["status"] != "queued" && st["status"] != "running"; });
+}
+
+Image image(const test::ServerProcess& s, const std::string& id) {
+  const auto r = s.client()->Get("/api/v1/renders/" + id + "/image?format=pfm");
+  if (!r || r->status != 200) return {};
+  return read_image({reinterpret_cast<const uint8_t*>(r->body.data()), r->body.size()}).image;
+}
+
+// The render by one process without Redis.
+Image single_process_image(const std::string& request) {
+  auto& s = test::default_server();
+  const std::string id = submit(s, request);
+  EXPECT_EQ(wait_finished(s, id)["status"], "done");
+  return image(s, id);
+}
+
+double max_relative_difference(const Image& a, const Image& b) {
+  if (a.width() != b.width() || a.height() != b.height() || a.empty()) return 1e30;
+  double worst = 0;
+  for (size_t i = 0; i < a.data().size(); ++i)
+    worst = std::max(worst, double(std::abs(a.data()[i] - b.data()[i])) / (1e-3 + std::abs(a.data()[i])));
+  return worst;
+}
+
+void expect_whole(const json& st, int spp) {
+  EXPECT_EQ(st["status"], "done") << st.dump();
+  EXPECT_EQ(st["spp_done"], spp);
+  EXPECT_EQ(st["samples"], uint64_t(spp) * kSize * kSize);  // every pixel exactly spp samples
+}
+
+int count_lines(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Polls a server's log until it holds `what` `times` times.
+bool wait_log(const test::ServerProcess& s, const std::string& what, int times = 1,
+              std::chrono::seconds limit = 60s) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (count_lines(s.log(), what) >= times) return true;
+    std::this_thread::sleep_for(5ms);
+  }
+  return false;
+}
+
+struct Cluster {
+  test::RedisProcess redis;
+  std::unique_ptr<test::ServerProcess> api;
+  std::vector<std::unique_ptr<test::ServerProcess>> workers;
+
+  Cluster(int workers_count, int item_spp, int claim_timeout_s = 30) {
+    const std::vector<std::string> common = {"--redis",
+                                             redis.url(),
+                                             "--redis-item-spp",
+                                             std::to_string(item_spp),
+                                             "--redis-claim-timeout-s",
+                                             std::to_string(claim_timeout_s)};
+    auto with = [&](std::vector<std::string> extra) {
+      extra.insert(extra.end(), common.begin(), common.end());
+      return extra;
+    };
+    api = std::make_unique<test::ServerProcess>(with({"--role", "api"}));
+    for (int i = 0; i < workers_count; ++i)
+      workers.push_back(std::make_unique<test::ServerProcess>(with({"--role", "worker", "--threads", "1"})));
+  }
+};
+
+TEST(RedisScaleOut, ThreeWorkersGiveTheImageOfOneProcess) {
+  SKIP_WITHOUT_REDIS();
+  const std::string request = body(48, 7);
+  const Image reference = single_process_image(request);
+  Cluster cluster(3, 4);
+  const std::string id = submit(*cluster.api, request);
+  expect_whole(wait_finished(*cluster.api, id), 48);
+  EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
+  int items = 0;
+  for (const auto& w : cluster.workers) {
+    const int n = count_lines(w->log(), "render " + id + " samples");
+    EXPECT_GT(n, 0) << "a worker took no item";
+    items += n;
+  }
+  EXPECT_GE(items, 2 * 12);  // 12 items, each started and done
+  EXPECT_EQ(count_lines(cluster.api->log(), "fetched map"), 0);
+  for (const auto& w : cluster.workers) EXPECT_EQ(count_lines(w->log(), "fetched map"), 0);  // all hold it
+}
+
+TEST(RedisScaleOut, AWorkerKilledMidItemLeavesItToAnother) {
+  SKIP_WITHOUT_REDIS();
+  const std::string request = body(64, 11);
+  const Image reference = single_process_image(request);
+  Cluster cluster(2, 16, 1);
+  const std::string id = submit(*cluster.api, request);
+  auto& victim = *cluster.workers[0];
+  ASSERT_TRUE(wait_log(victim, "render " + id + " samples")) << victim.log();
+  victim.send_signal(SIGKILL);  // mid-item: an item takes far longer than the log poll
+  ASSERT_TRUE(victim.wait_exit(10s).has_value());
+  const json st = wait_finished(*cluster.api, id);
+  expect_whole(st, 64);
+  EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
+  EXPECT_GE(count_lines(cluster.workers[1]->log(), "took over item"), 1) << cluster.workers[1]->log();
+}
+
+TEST(RedisScaleOut, ARenderSurvivesRedisRestarting) {
+  SKIP_WITHOUT_REDIS();
+  const std::string request = body(64, 5);
+  const Image reference = single_process_image(request);
+  Cluster cluster(1, 2);
+  const std::string id = submit(*cluster.api, request);
+  ASSERT_TRUE(wait_log(*cluster.workers[0], "render " + id + " samples", 3));
+  EXPECT_LT(status(*cluster.api, id)["spp_done"], 64);
+  cluster.redis.restart();  // its append-only file keeps the items, partials and notices
+  const json st = wait_finished(*cluster.api, id);
+  expect_whole(st, 64);
+  EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
+}
+
+TEST(RedisScaleOut, CancelReachesEveryWorker) {
+  SKIP_WITHOUT_REDIS();
+  Cluster cluster(3, 4096);  // items far longer than the test: only a cancel ends them
+  const std::string id = submit(*cluster.api, body(3 * 4096, 3));
+  for (const auto& w : cluster.workers) ASSERT_TRUE(wait_log(*w, "render " + id + " samples")) << w->log();
+  const auto r = cluster.api->client()->Delete("/api/v1/renders/" + id);
+  ASSERT_TRUE(r && r->status == 202) << (r ? r->body : "no answer");
+  EXPECT_EQ(wait_finished(*cluster.api, id)["status"], "cancelled");
+  for (const auto& w : cluster.workers)
+    EXPECT_TRUE(wait_log(*w, "cancelled", 1, 30s)) << "a worker went on rendering: " << w->log();
+}
+
+void upload_forest(const test::ServerProcess& s) {
+  const auto bytes = test::read_bytes(test::envmap_path("forest.exr"));
+  const auto r = s.client()->Post("/api/v1/envmaps?name=forest", reinterpret_cast<const char*>(bytes.data()),
+                                  bytes.size(), "application/octet-stream");
+  ASSERT_TRUE(r && r->status == 201) << (r ? r->body : "no answer");
+}
+
+TEST(RedisScaleOut, WorkersFetchAMapTheyLackByItsHashOnce) {
+  SKIP_WITHOUT_REDIS();
+  const std::string request = body(32, 9, "forest");
+  test::ServerProcess single;
+  upload_forest(single);
+  const std::string single_id = submit(single, request);
+  EXPECT_EQ(wait_finished(single, single_id)["status"], "done");
+  Cluster cluster(2, 4);
+  upload_forest(*cluster.api);  // the workers hold only the built-in map
+  const std::string id = submit(*cluster.api, request);
+  expect_whole(wait_finished(*cluster.api, id), 32);
+  EXPECT_LT(max_relative_difference(image(single, single_id), image(*cluster.api, id)), 1e-5);
+  for (const auto& w : cluster.workers) EXPECT_EQ(count_lines(w->log(), "fetched map"), 1) << w->log();
+  const auto unknown = cluster.api->client()->Get("/api/v1/content/0123456789abcdef-4x2");
+  ASSERT_TRUE(unknown);
+  EXPECT_EQ(unknown->status, 404);
+}
+
+TEST(RedisScaleOut, ARoleWithoutRedisIsRefusedAtStart) {
+  for (const char* role : {"api", "worker"}) {
+    const auto failure = test::run_until_exit({"--role", role}, 30s);
+    EXPECT_EQ(failure.exit_status, 2);
+    EXPECT_NE(failure.output.find("--role " + std::string(role) + " needs --redis"), std::string::npos)
+        << failure.output;
+  }
+  const auto bad_url = test::run_until_exit({"--redis", "http://127.0.0.1:6379"}, 30s);
+  EXPECT_EQ(bad_url.exit_status, 2);
+  EXPECT_NE(bad_url.output.find("redis://HOST[:PORT]"), std::string::npos) << bad_url.output;
+}
+
+}  // namespace
+}  // namespace lp

@@ -1,0 +1,38 @@
+#pragma once
+// A real redis-server for a test: on a free loopback port, its data and append-only file in a fresh
+// directory (appendonly yes), stopped at the end. restart() stops it (SIGTERM: it writes its append-only
+// file) and starts it again on the same port and directory.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "support/temp_dir.hpp"
+
+namespace lp::test {
+
+// The path of redis-server, nullopt when it is not installed (the test then skips).
+std::optional<std::filesystem::path> redis_server_binary();
+
+class RedisProcess {
+ public:
+  RedisProcess();  // throws std::runtime_error if it does not answer PING within 10 s
+  ~RedisProcess();
+  RedisProcess(const RedisProcess&) = delete;
+  RedisProcess& operator=(const RedisProcess&) = delete;
+
+  int port() const { return port_; }
+  std::string url() const { return "redis://127.0.0.1:" + std::to_string(port_); }
+  void stop();
+  void start();
+  void restart() {
+    stop();
+    start();
+  }
+
+ private:
+  TempDir dir_;
+  int port_ = 0;
+  int pid_ = -1;
+};
+
+}  // namespace lp::test
