@@ -45,7 +45,7 @@ run() {  # $1 = workers now running; their logs are $work/worker*.log
   while :; do
     status=$(curl -s "$api/renders/$id" | python3 -c 'import json,sys; print(json.load(sys.stdin)["status"])')
     [ "$status" = running ] || [ "$status" = queued ] || break
-    sleep 0.02
+    sleep 0.1
   done
   end=$(date +%s.%N)
   cat "$work"/worker*.log | grep "render $id samples .* done in" | sed 's/.*done in \([0-9.]*\) s/\1/' >"$work/items"
