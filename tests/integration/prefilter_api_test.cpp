@@ -16,6 +16,7 @@
 #include "support/http_reply.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
+#include "support/shared_client.hpp"
 #include "support/white_map.hpp"
 
 namespace lp {
@@ -24,27 +25,21 @@ namespace {
 using nlohmann::json;
 using test::Reply;
 
-httplib::Client& client() {
-  static auto c = test::shared_server().client();
-  return *c;
-}
-
-Reply get(const std::string& path) {
-  return test::reply(client().Get(path.c_str()));
-}
+using test::shared_client;
+using test::shared_get;
 
 Reply submit(const std::string& map, const std::string& body) {
   return test::reply(
-      client().Post(("/api/v1/envmaps/" + map + "/prefilter").c_str(), body, "application/json"));
+      shared_client().Post(("/api/v1/envmaps/" + map + "/prefilter").c_str(), body, "application/json"));
 }
 
 Reply del(const std::string& path) {
-  return test::reply(client().Delete(path.c_str()));
+  return test::reply(shared_client().Delete(path.c_str()));
 }
 
 const std::string& white() {
   static const std::string name = [] {
-    const Reply r = test::upload_white_map(client(), "prefilter_white");
+    const Reply r = test::upload_white_map(shared_client(), "prefilter_white");
     EXPECT_TRUE(r.status == 201 || r.status == 409) << r.body;
     return std::string("prefilter_white");
   }();
@@ -57,7 +52,7 @@ json finished(const std::string& map, const std::string& body) {
   EXPECT_EQ(r.status, 202) << r.body;
   const json queued = r.body_json();
   EXPECT_EQ(r.header("Location"), "/api/v1/prefilters/" + queued["id"].get<std::string>());
-  return test::finished_job(client(), r.header("Location"));
+  return test::finished_job(shared_client(), r.header("Location"));
 }
 
 std::vector<uint8_t> bytes_of(const Reply& r) {
@@ -76,7 +71,7 @@ TEST(PrefilterApi, AWhiteMapIsOneAtEveryLevelOfTheKtx2File) {
   EXPECT_EQ(st["format"], "ktx2");
   EXPECT_EQ(st["precision"], "half");
   ASSERT_EQ(st["files"].size(), 1u);
-  const Reply file = get(st["files"][0]["url"]);
+  const Reply file = shared_get(st["files"][0]["url"]);
   ASSERT_EQ(file.status, 200) << file.body;
   EXPECT_EQ(file.type(), "image/ktx2");
   const Ktx2Texture t = read_ktx2(bytes_of(file), {});
@@ -100,7 +95,7 @@ TEST(PrefilterApi, ACubeIsAKtx2CubeMapOfSixFacesAtEveryLevel) {
   EXPECT_EQ(st["level_info"][1]["height"], 16);
   const std::string faces = st["convention"]["cube_faces"];
   EXPECT_NE(faces.find("+X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << faces;
-  const Reply file = get(st["files"][0]["url"]);
+  const Reply file = shared_get(st["files"][0]["url"]);
   ASSERT_EQ(file.status, 200) << file.body;
   EXPECT_EQ(file.type(), "image/ktx2");
   const Ktx2Texture t = read_ktx2(bytes_of(file), {});
@@ -132,7 +127,7 @@ TEST(PrefilterApi, EveryProjectionHasItsShapeAndIsOneForAWhiteMap) {
     ASSERT_EQ(st["status"], "done") << st;
     ASSERT_EQ(st["files"].size(), 3u);
     for (int level = 0; level < 3; ++level) {
-      const Reply r = get(st["files"][size_t(level)]["url"]);
+      const Reply r = shared_get(st["files"][size_t(level)]["url"]);
       ASSERT_EQ(r.status, 200);
       const Image image = read_exr(bytes_of(r), {});
       ASSERT_EQ(image.width(), width >> level);
@@ -152,18 +147,18 @@ TEST(PrefilterApi, ExrLevelsOfARealMapKeepItsPowerAtLevelZero) {
   ASSERT_EQ(st["files"].size(), 4u);
   EXPECT_EQ(st["files"][3]["name"], "level3.exr");
   EXPECT_EQ(st["level_info"][3]["roughness"], 1.0);
-  const Reply level0 = get(st["files"][0]["url"]);
+  const Reply level0 = shared_get(st["files"][0]["url"]);
   ASSERT_EQ(level0.status, 200);
   EXPECT_EQ(level0.type(), "image/x-exr");
   const Image image = read_exr(bytes_of(level0), {});
   ASSERT_EQ(image.width(), 128);
   ASSERT_EQ(image.height(), 64);
-  const json power = get("/api/v1/envmaps/forest_exr").body_json()["power"];
+  const json power = shared_get("/api/v1/envmaps/forest_exr").body_json()["power"];
   const Rgb level_power = EnvMap::power_of(image);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(level_power[c] / power[c].get<double>(), 1.0, 1e-5);
-  const Image level3 = read_exr(bytes_of(get(st["files"][3]["url"])), {});
+  const Image level3 = read_exr(bytes_of(shared_get(st["files"][3]["url"])), {});
   EXPECT_EQ(level3.width(), 16);
-  EXPECT_EQ(get(st["files"][0]["url"].get<std::string>()).header("ETag"), level0.header("ETag"));
+  EXPECT_EQ(shared_get(st["files"][0]["url"].get<std::string>()).header("ETag"), level0.header("ETag"));
 }
 
 TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
@@ -174,13 +169,13 @@ TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
   const Reply queued = submit(white(), "");
   ASSERT_EQ(queued.status, 202) << queued.body;
   const std::string queued_url = queued.header("Location");
-  const Reply early = get(queued_url + "/files/prefiltered.ktx2");
+  const Reply early = shared_get(queued_url + "/files/prefiltered.ktx2");
   EXPECT_EQ(early.status, 409);
   EXPECT_EQ(early.body_json()["error"]["code"], "no_image_yet");
 
   json st;
   for (int i = 0; i < 6000; ++i) {  // until a row of level 1 has reported
-    st = get(url).body_json();
+    st = shared_get(url).body_json();
     if (st["progress"].get<double>() > 0.001) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
@@ -189,14 +184,14 @@ TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
   const Reply cancel = del(url);
   EXPECT_EQ(cancel.status, 202);
   EXPECT_EQ(cancel.body_json()["cancel_requested"], true);
-  EXPECT_EQ(test::finished_job(client(), url)["status"], "cancelled");
-  EXPECT_EQ(get(url + "/files/prefiltered.ktx2").status, 409);
+  EXPECT_EQ(test::finished_job(shared_client(), url)["status"], "cancelled");
+  EXPECT_EQ(shared_get(url + "/files/prefiltered.ktx2").status, 409);
   EXPECT_EQ(del(url).status, 204);
-  EXPECT_EQ(get(url).status, 404);
+  EXPECT_EQ(shared_get(url).status, 404);
 
-  EXPECT_EQ(test::finished_job(client(), queued_url)["status"], "done");
-  EXPECT_EQ(get(queued_url + "/files/prefiltered.ktx2").status, 200);
-  const json list = get("/api/v1/prefilters").body_json();
+  EXPECT_EQ(test::finished_job(shared_client(), queued_url)["status"], "done");
+  EXPECT_EQ(shared_get(queued_url + "/files/prefiltered.ktx2").status, 200);
+  const json list = shared_get("/api/v1/prefilters").body_json();
   bool listed = false;
   for (const json& job : list["prefilters"])
     listed = listed || queued_url.ends_with(job["id"].get<std::string>());
@@ -205,7 +200,7 @@ TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
 
 // Number of jobs the server holds.
 size_t job_count() {
-  return get("/api/v1/prefilters").body_json()["prefilters"].size();
+  return shared_get("/api/v1/prefilters").body_json()["prefilters"].size();
 }
 
 TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
@@ -214,11 +209,11 @@ TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
   ASSERT_EQ(first.status, 202) << first.body;
   EXPECT_EQ(first.body_json()["reused"], false);
   const std::string url = first.header("Location");
-  const json done = test::finished_job(client(), url);
+  const json done = test::finished_job(shared_client(), url);
   ASSERT_EQ(done["status"], "done");
 
   // The same pixels under another id, the same parameters given explicitly: the same job, done.
-  const Reply again_upload = test::upload_white_map(client(), "prefilter_white_again");
+  const Reply again_upload = test::upload_white_map(shared_client(), "prefilter_white_again");
   ASSERT_TRUE(again_upload.status == 201 || again_upload.status == 409);
   const size_t jobs = job_count();
   const Reply again = submit("prefilter_white_again", R"({"levels":3,"base_size":16,"samples":48,
@@ -230,7 +225,7 @@ TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
   EXPECT_EQ(again.body_json()["status"], "done");
   EXPECT_EQ(again.body_json()["elapsed_s"], done["elapsed_s"]);  // not run again
   EXPECT_EQ(job_count(), jobs);
-  EXPECT_FALSE(get(url).body_json().contains("reused"));  // the answer of the POST alone says it
+  EXPECT_FALSE(shared_get(url).body_json().contains("reused"));  // the answer of the POST alone says it
 
   // Any parameter other, or another map: a new job.
   const std::vector<std::string> others = {
@@ -244,18 +239,18 @@ TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
     const Reply r = submit(white(), other);
     EXPECT_EQ(r.status, 202) << other;
     EXPECT_EQ(r.body_json()["reused"], false) << other;
-    EXPECT_EQ(test::finished_job(client(), r.header("Location"))["status"], "done");
+    EXPECT_EQ(test::finished_job(shared_client(), r.header("Location"))["status"], "done");
   }
   const Reply forest = submit("forest_exr", body);
   EXPECT_EQ(forest.status, 202);
-  EXPECT_EQ(test::finished_job(client(), forest.header("Location"))["status"], "done");
+  EXPECT_EQ(test::finished_job(shared_client(), forest.header("Location"))["status"], "done");
 
   // Removed with DELETE: made again.
   EXPECT_EQ(del(url).status, 204);
   const Reply after_delete = submit(white(), body);
   EXPECT_EQ(after_delete.status, 202);
   EXPECT_NE(after_delete.header("Location"), url);
-  EXPECT_EQ(test::finished_job(client(), after_delete.header("Location"))["status"], "done");
+  EXPECT_EQ(test::finished_job(shared_client(), after_delete.header("Location"))["status"], "done");
 }
 
 TEST(PrefilterApi, ARunningJobIsReusedUntilItIsCancelled) {
@@ -274,8 +269,8 @@ TEST(PrefilterApi, ARunningJobIsReusedUntilItIsCancelled) {
   EXPECT_EQ(after_cancel.status, 202);
   EXPECT_NE(after_cancel.header("Location"), url);
   EXPECT_EQ(del(after_cancel.header("Location")).status, 202);
-  EXPECT_EQ(test::finished_job(client(), url)["status"], "cancelled");
-  EXPECT_EQ(test::finished_job(client(), after_cancel.header("Location"))["status"], "cancelled");
+  EXPECT_EQ(test::finished_job(shared_client(), url)["status"], "cancelled");
+  EXPECT_EQ(test::finished_job(shared_client(), after_cancel.header("Location"))["status"], "cancelled");
   EXPECT_EQ(del(url).status, 204);
   EXPECT_EQ(del(after_cancel.header("Location")).status, 204);
 }
@@ -307,11 +302,11 @@ TEST(PrefilterApi, UnknownMapsJobsAndFilesAre404) {
   const Reply no_map = submit("no_such_map", "");
   EXPECT_EQ(no_map.status, 404);
   EXPECT_EQ(no_map.body_json()["error"]["code"], "not_found");
-  EXPECT_EQ(get("/api/v1/prefilters/0123456789abcdef").status, 404);
+  EXPECT_EQ(shared_get("/api/v1/prefilters/0123456789abcdef").status, 404);
   EXPECT_EQ(del("/api/v1/prefilters/0123456789abcdef").status, 404);
   const json st = finished(white(), R"({"levels":2,"base_size":16,"samples":16})");
   ASSERT_EQ(st["status"], "done");
-  const Reply no_file = get("/api/v1/prefilters/" + st["id"].get<std::string>() + "/files/level0.exr");
+  const Reply no_file = shared_get("/api/v1/prefilters/" + st["id"].get<std::string>() + "/files/level0.exr");
   EXPECT_EQ(no_file.status, 404);
   EXPECT_NE(no_file.body_json()["error"]["message"].get<std::string>().find("prefiltered.ktx2"),
             std::string::npos);

@@ -13,6 +13,7 @@
 #include "support/http_reply.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
+#include "support/shared_client.hpp"
 #include "support/sunny_map.hpp"
 #include "support/white_map.hpp"
 
@@ -22,20 +23,19 @@ namespace {
 using nlohmann::json;
 using test::Reply;
 
-httplib::Client& client() {
-  static auto c = test::shared_server().client();
-  return *c;
-}
+using test::shared_client;
+using test::shared_get;
 
 Reply post_sun(const std::string& map, const std::string& body) {
-  return test::reply(client().Post(("/api/v1/envmaps/" + map + "/sun").c_str(), body, "application/json"));
+  return test::reply(
+      shared_client().Post(("/api/v1/envmaps/" + map + "/sun").c_str(), body, "application/json"));
 }
 
 Reply upload(const std::string& name, const Image& image) {
   const auto pfm = write_pfm(image);
-  return test::reply(client().Post(("/api/v1/envmaps?name=" + name).c_str(),
-                                   reinterpret_cast<const char*>(pfm.data()), pfm.size(),
-                                   "application/octet-stream"));
+  return test::reply(shared_client().Post(("/api/v1/envmaps?name=" + name).c_str(),
+                                          reinterpret_cast<const char*>(pfm.data()), pfm.size(),
+                                          "application/octet-stream"));
 }
 
 // The smooth sky with a sun of 1.5 degrees at theta 60, phi 120, uploaded once as "sunny"; its sun.
@@ -87,19 +87,19 @@ TEST(SunApi, FindsTheSunOfAMapAndRegistersTheResidual) {
   EXPECT_EQ(j["parameters"]["threshold"], 0.05);
 
   // Listed with its source, and holding the residual's power.
-  const json meta = test::reply(client().Get("/api/v1/envmaps/sunny-sun")).body_json();
+  const json meta = shared_get("/api/v1/envmaps/sunny-sun").body_json();
   EXPECT_EQ(meta["format"], "residual");
   EXPECT_EQ(meta["source"], "sun:sunny");
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(meta["power"][c].get<double>(), power["residual"][c].get<double>(),
                 1e-6 * power["map"][c].get<double>());
   EXPECT_LT(meta["max_luminance"].get<double>(), 2.0);  // only the sky is left
-  const json list = test::reply(client().Get("/api/v1/envmaps")).body_json();
+  const json list = shared_get("/api/v1/envmaps").body_json();
   bool listed = false;
   for (const json& m : list["envmaps"]) listed = listed || m["id"] == "sunny-sun";
   EXPECT_TRUE(listed);
-  const Reply samples = test::reply(
-      client().Post("/api/v1/envmaps/sunny-sun/samples", R"({"count":16,"seed":1})", "application/json"));
+  const Reply samples = test::reply(shared_client().Post("/api/v1/envmaps/sunny-sun/samples",
+                                                         R"({"count":16,"seed":1})", "application/json"));
   EXPECT_EQ(samples.status, 200) << samples.body;
 
   // Asked again: the same residual, from the cache.
@@ -119,14 +119,14 @@ TEST(SunApi, OtherParametersReplaceTheResidual) {
   EXPECT_FALSE(j["cached"].get<bool>());
   EXPECT_EQ(j["residual"], "sunny-sun");
   EXPECT_EQ(j["parameters"]["max_radius_deg"], 3.0);
-  const json meta = test::reply(client().Get("/api/v1/envmaps/sunny-sun")).body_json();
+  const json meta = shared_get("/api/v1/envmaps/sunny-sun").body_json();
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(meta["power"][c].get<double>(), j["power"]["residual"][c].get<double>(),
                 1e-6 * j["power"]["map"][c].get<double>());
 }
 
 TEST(SunApi, AConstantMapHasNoSun) {
-  const Reply up = test::upload_white_map(client(), "sun_white");
+  const Reply up = test::upload_white_map(shared_client(), "sun_white");
   ASSERT_TRUE(up.status == 201 || up.status == 409) << up.body;
   const Reply r = post_sun("sun_white", "");
   ASSERT_EQ(r.status, 200) << r.body;
@@ -137,7 +137,7 @@ TEST(SunApi, AConstantMapHasNoSun) {
   EXPECT_FALSE(j.contains("direction"));
   EXPECT_EQ(j["power"]["residual"], j["power"]["map"]);
   EXPECT_EQ(j["power"]["sun"], json::array({0.0, 0.0, 0.0}));
-  EXPECT_EQ(test::reply(client().Get("/api/v1/envmaps/sun_white-sun")).status, 404);
+  EXPECT_EQ(shared_get("/api/v1/envmaps/sun_white-sun").status, 404);
 }
 
 TEST(SunApi, BadInput) {
@@ -175,14 +175,14 @@ TEST(SunApi, RendersExtractTheSunAndEchoIt) {
                        {"width", 24},
                        {"height", 16},
                        {"spp", 4}};
-    const Reply r = test::reply(client().Post("/api/v1/renders", body.dump(), "application/json"));
+    const Reply r = test::reply(shared_client().Post("/api/v1/renders", body.dump(), "application/json"));
     ASSERT_EQ(r.status, 202) << r.body;
-    const json done = test::finished_render(client(), r.body_json()["id"]);
+    const json done = test::finished_render(shared_client(), r.body_json()["id"]);
     EXPECT_EQ(done["status"], "done") << done.dump();
     EXPECT_EQ(done["lighting_sun"], sun);
   }
   const json wrong = {{"envmap", "sunny"}, {"lighting", {{"mode", "bsdf"}, {"sun", "extract"}}}};
-  expect_field_error(test::reply(client().Post("/api/v1/renders", wrong.dump(), "application/json")),
+  expect_field_error(test::reply(shared_client().Post("/api/v1/renders", wrong.dump(), "application/json")),
                      "lighting.sun");
 }
 
@@ -190,9 +190,9 @@ TEST(SunApi, TheResidualRendersLikeAnyMap) {
   sunny();
   ASSERT_EQ(post_sun("sunny", "").status, 200);
   const json body = {{"envmap", "sunny-sun"}, {"width", 16}, {"height", 16}, {"spp", 2}};
-  const Reply r = test::reply(client().Post("/api/v1/renders", body.dump(), "application/json"));
+  const Reply r = test::reply(shared_client().Post("/api/v1/renders", body.dump(), "application/json"));
   ASSERT_EQ(r.status, 202) << r.body;
-  EXPECT_EQ(test::finished_render(client(), r.body_json()["id"])["status"], "done");
+  EXPECT_EQ(test::finished_render(shared_client(), r.body_json()["id"])["status"], "done");
 }
 
 }  // namespace
