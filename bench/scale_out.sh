@@ -42,12 +42,10 @@ run() {  # $1 = workers now running; their logs are $work/worker*.log
   local id start end status
   start=$(date +%s.%N)
   id=$(curl -s -X POST "$api/renders" -H 'Content-Type: application/json' -d "$body" | python3 -c 'import json,sys; print(json.load(sys.stdin)["id"])')
-  while :; do
-    status=$(curl -s "$api/renders/$id" | python3 -c 'import json,sys; print(json.load(sys.stdin)["status"])')
-    [ "$status" = running ] || [ "$status" = queued ] || break
-    sleep 0.1
-  done
+  # The event stream ends with the job (checked every 250 ms): no polling processes on the measured cores.
+  curl -sN "$api/renders/$id/events" >"$work/events"
   end=$(date +%s.%N)
+  status=$(grep '^data:' "$work/events" | tail -1 | sed 's/^data: //' | python3 -c 'import json,sys; print(json.load(sys.stdin)["status"])')
   cat "$work"/worker*.log | grep "render $id samples .* done in" | sed 's/.*done in \([0-9.]*\) s/\1/' >"$work/items"
   python3 - "$1" "$start" "$end" "$work/items" "$size" "$spp" "$status" <<'PY'
 import sys
