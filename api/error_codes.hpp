@@ -45,6 +45,7 @@ enum class ErrorCode {
   CannotResume,
   EnvmapMissing,
   EnvmapChanged,
+  WorkerOnly,  // --role worker: renders work items of other servers, accepts no render of its own
   // Capacity.
   QueueFull,
   TooManyStreams,

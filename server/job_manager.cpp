@@ -1,8 +1,6 @@
 #include "server/job_manager.hpp"
 
 #include <fmt/format.h>
-#include <oneapi/tbb/info.h>
-#include <oneapi/tbb/task_arena.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -10,7 +8,7 @@
 #include <random>
 
 #include "engine/core/rng.hpp"
-#include "server/render_thread_priority.hpp"
+#include "server/render_arena.hpp"
 
 namespace lp::server {
 
@@ -156,14 +154,7 @@ std::shared_ptr<Job> JobManager::next_job() {
 }
 
 void JobManager::runner_loop(int runner) {
-  const int concurrency =
-      config_.arena_concurrency > 0 ? config_.arena_concurrency : tbb::info::default_concurrency();
-  // Low priority: oneTBB gives its workers to interactive requests (sampling, previews), which run in
-  // normal-priority arenas, before the renders.
-  tbb::task_arena arena(concurrency, 1, tbb::task_arena::priority::low);
-  arena.initialize();
-  RenderThreadPriority lowered(arena, config_.render_priority);
-  lower_to_render_priority(config_.render_priority);
+  RenderArena arena(config_.arena_concurrency, config_.render_priority);
   while (auto job = next_job()) {
     spdlog::debug("runner {} takes job {}", runner, job->id());
     arena.execute([&] { job->execute(); });

@@ -50,6 +50,15 @@ std::string ms(std::chrono::milliseconds d) {
 
 }  // namespace
 
+std::optional<RedisReply> parse_reply(std::string_view wire) {
+  const std::unique_ptr<redisReader, void (*)(redisReader*)> reader(redisReaderCreate(), redisReaderFree);
+  if (!reader || redisReaderFeed(reader.get(), wire.data(), wire.size()) != REDIS_OK) return std::nullopt;
+  void* raw = nullptr;
+  if (redisReaderGetReply(reader.get(), &raw) != REDIS_OK || !raw) return std::nullopt;
+  const std::unique_ptr<redisReply, void (*)(void*)> reply(static_cast<redisReply*>(raw), freeReplyObject);
+  return copy(*reply);
+}
+
 RedisClient::RedisClient(RedisAddress address, std::chrono::milliseconds retry_for)
     : address_(std::move(address)), retry_for_(retry_for), context_(nullptr, redisFree) {}
 
@@ -121,6 +130,14 @@ void RedisClient::set(std::string_view key, std::string_view value, std::optiona
     command({"SET", key, value});
 }
 
+void RedisClient::set_if_absent(std::string_view key, std::string_view value) {
+  command({"SET", key, value, "NX"});
+}
+
+void RedisClient::expire(std::string_view key, int seconds) {
+  command({"EXPIRE", key, std::to_string(seconds)});
+}
+
 std::optional<std::string> RedisClient::get(std::string_view key) {
   auto r = command({"GET", key});
   return r.nil() ? std::nullopt : std::optional(std::move(r.text));
@@ -143,6 +160,10 @@ void RedisClient::hset(std::string_view key, std::string_view field, std::string
 std::optional<std::string> RedisClient::hget(std::string_view key, std::string_view field) {
   auto r = command({"HGET", key, field});
   return r.nil() ? std::nullopt : std::optional(std::move(r.text));
+}
+
+bool RedisClient::hexists(std::string_view key, std::string_view field) {
+  return command({"HEXISTS", key, field}).integer > 0;
 }
 
 void RedisClient::hdel(std::string_view key, std::string_view field) {
@@ -173,12 +194,25 @@ std::string RedisClient::xadd(std::string_view key,
   return command(args).text;
 }
 
-void RedisClient::xgroup_create(std::string_view key, std::string_view group) {
+void RedisClient::xgroup_create(std::string_view key, std::string_view group, std::string_view start) {
   try {
-    command({"XGROUP", "CREATE", key, group, "0", "MKSTREAM"});
+    command({"XGROUP", "CREATE", key, group, start, "MKSTREAM"});
   } catch (const RedisError& e) {
     if (std::string_view(e.what()).find("BUSYGROUP") == std::string_view::npos) throw;
   }
+}
+
+std::vector<StreamEntry> RedisClient::xrange(std::string_view key) {
+  return range_entries(std::string(key), command({"XRANGE", key, "-", "+"}));
+}
+
+std::vector<std::string> RedisClient::xpending(std::string_view key, std::string_view group, int64_t count) {
+  return pending_ids(command({"XPENDING", key, group, "-", "+", std::to_string(count)}));
+}
+
+std::optional<std::string> RedisClient::xgroup_last_delivered(std::string_view key, std::string_view group) {
+  if (!exists(key)) return std::nullopt;
+  return group_field(command({"XINFO", "GROUPS", key}), std::string(group), "last-delivered-id");
 }
 
 std::vector<StreamEntry> RedisClient::xreadgroup(std::string_view group, std::string_view consumer,
@@ -194,6 +228,7 @@ std::vector<StreamEntry> RedisClient::xreadgroup(std::string_view group, std::st
 
 std::vector<StreamEntry> RedisClient::xread(std::string_view key, std::string_view after,
                                             std::chrono::milliseconds block) {
+  if (block.count() <= 0) return stream_entries(command({"XREAD", "STREAMS", key, after}));
   return stream_entries(command({"XREAD", "BLOCK", ms(block), "STREAMS", key, after}));
 }
 

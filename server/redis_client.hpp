@@ -27,6 +27,10 @@ class RedisError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The first reply in `wire`, bytes of the Redis protocol read as a connection reads them; nullopt when
+// they hold no whole reply or are no such bytes.
+std::optional<RedisReply> parse_reply(std::string_view wire);
+
 class RedisClient {
  public:
   explicit RedisClient(RedisAddress address, std::chrono::milliseconds retry_for = std::chrono::seconds(60));
@@ -40,11 +44,14 @@ class RedisClient {
   RedisReply command(const std::vector<std::string_view>& args);
 
   void set(std::string_view key, std::string_view value, std::optional<int> expire_s = std::nullopt);
+  void set_if_absent(std::string_view key, std::string_view value);  // SET key value NX
+  void expire(std::string_view key, int seconds);
   std::optional<std::string> get(std::string_view key);
   bool exists(std::string_view key);
   void del(const std::vector<std::string_view>& keys);
   void hset(std::string_view key, std::string_view field, std::string_view value);
   std::optional<std::string> hget(std::string_view key, std::string_view field);
+  bool hexists(std::string_view key, std::string_view field);
   void hdel(std::string_view key, std::string_view field);
   void sadd(std::string_view key, std::string_view member);
   void srem(std::string_view key, std::string_view member);
@@ -52,12 +59,19 @@ class RedisClient {
 
   // XADD key * field value ...; the new entry's id.
   std::string xadd(std::string_view key, const std::vector<std::pair<std::string, std::string>>& fields);
-  // XGROUP CREATE key group 0 MKSTREAM; a group that exists already is left as it is.
-  void xgroup_create(std::string_view key, std::string_view group);
+  // XGROUP CREATE key group start MKSTREAM; a group that exists already is left as it is. From start
+  // "0" the group delivers the stream's entries from the first, from "$" only entries added later.
+  void xgroup_create(std::string_view key, std::string_view group, std::string_view start = "0");
+  // The entries of a stream (XRANGE key - +).
+  std::vector<StreamEntry> xrange(std::string_view key);
+  // The ids of up to `count` entries delivered to the group's consumers and not acknowledged.
+  std::vector<std::string> xpending(std::string_view key, std::string_view group, int64_t count);
+  // The id of the last entry the group delivered; nullopt when the stream or the group is gone.
+  std::optional<std::string> xgroup_last_delivered(std::string_view key, std::string_view group);
   // XREADGROUP GROUP group consumer COUNT 1 BLOCK block STREAMS keys... > ...
   std::vector<StreamEntry> xreadgroup(std::string_view group, std::string_view consumer,
                                       const std::vector<std::string>& keys, std::chrono::milliseconds block);
-  // XREAD BLOCK block STREAMS key after: the entries after id `after`.
+  // XREAD BLOCK block STREAMS key after: the entries after id `after` (without waiting when block is 0).
   std::vector<StreamEntry> xread(std::string_view key, std::string_view after,
                                  std::chrono::milliseconds block);
   void xack(std::string_view key, std::string_view group, std::string_view id);

@@ -1,6 +1,7 @@
 #pragma once
-// A Redis reply as a plain value (copied out of hiredis's reply), and the stream entries of the replies of
-// XREADGROUP, XREAD and XAUTOCLAIM.
+// A Redis reply as a plain value (copied out of hiredis's reply), and what the replies of the stream
+// commands hold: entries (XREADGROUP, XREAD, XAUTOCLAIM, XRANGE), pending ids (XPENDING) and a consumer
+// group's fields (XINFO GROUPS). Malformed parts of a reply are left out, never trusted.
 #include <map>
 #include <optional>
 #include <string>
@@ -25,10 +26,20 @@ struct StreamEntry {
   std::optional<std::string> field(const std::string& name) const;
 };
 
+// Whether stream entry id `a` ("MS-SEQ") comes before `b`; an id that does not parse comes first.
+bool stream_id_less(const std::string& a, const std::string& b);
+
 // [[stream, [[id, [field, value, ...]], ...]], ...] (XREAD, XREADGROUP); nothing for nil.
 std::vector<StreamEntry> stream_entries(const RedisReply& reply);
 // [next, [[id, [field, value, ...]], ...], deleted] (XAUTOCLAIM) for `stream`; entries deleted from the
 // stream meanwhile (nil fields) are left out.
 std::vector<StreamEntry> claimed_entries(const std::string& stream, const RedisReply& reply);
+// [[id, [field, value, ...]], ...] (XRANGE) for `stream`.
+std::vector<StreamEntry> range_entries(const std::string& stream, const RedisReply& reply);
+// [[id, consumer, idle, deliveries], ...] (XPENDING key group - + count): the ids.
+std::vector<std::string> pending_ids(const RedisReply& reply);
+// [[name, value, ...], ...] (XINFO GROUPS): the value of `field` in the group named `group`, as text.
+std::optional<std::string> group_field(const RedisReply& reply, const std::string& group,
+                                       const std::string& field);
 
 }  // namespace lp::server

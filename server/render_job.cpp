@@ -36,6 +36,7 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       earlier_render_s_(record.render_s),
       image_(std::move(image)),
       spp_done_(image_ ? record.spp_done : 0),
+      ranges_done_(image_ ? record.ranges_done : std::vector<render::SampleRange>{}),
       stats_(record.stats),
       render_s_(record.render_s),
       image_file_(image_ ? record.image_file : ""),
@@ -77,6 +78,7 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   r.elapsed_s = elapsed_s();
   std::lock_guard lock(mutex_);
   r.spp_done = spp_done_;
+  r.ranges_done = ranges_done_;
   r.image_file = image_file_;
   r.envmap_fingerprint = envmap_fingerprint_;
   r.stats = stats_;
@@ -104,7 +106,8 @@ void RenderJob::delete_state() const {
   if (!image_file_.empty()) store_->remove(store_->renders_dir() / image_file_);
 }
 
-void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, double render_s) {
+void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, double render_s,
+                        std::vector<render::SampleRange> ranges_done) {
   auto image = std::make_shared<const Image>(std::move(pixels));
   std::lock_guard lock(mutex_);
   if (counters_)
@@ -112,6 +115,7 @@ void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, d
                    earlier_stats_.rays + stats.rays - stats_.rays, earlier_render_s_ + render_s - render_s_);
   image_ = std::move(image);
   spp_done_ = spp_done;
+  ranges_done_ = std::move(ranges_done);
   stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};
   render_s_ = earlier_render_s_ + render_s;
 }
@@ -159,7 +163,10 @@ bool RenderJob::run() {
     spdlog::info("render {} {} after {:.2f} s ({} spp done)", id(), how, elapsed_s(), spp_done());
   };
   try {
-    if (!(scale_out_ ? render_split() : render_here())) {
+    const bool ended = scale_out_             ? render_split()
+                       : ranges_done_.empty() ? render_here()
+                                              : render_ranges_here();
+    if (!ended) {
       release(interrupt_requested() ? "interrupted" : "cancelled");
       return false;
     }
@@ -197,29 +204,88 @@ bool RenderJob::render_here() {
   return true;
 }
 
-// Work items on Redis; the image of the ranges merged so far is published as they arrive. A split render
-// keeps its image in the state store once done (a continued run starts again).
-bool RenderJob::render_split() {
+std::vector<render::SampleRange> RenderJob::done_ranges() const {
+  std::lock_guard lock(mutex_);
+  if (!ranges_done_.empty()) return ranges_done_;
+  if (spp_done_ == 0) return {};
+  return {{0, uint32_t(spp_done_)}};
+}
+
+render::PartialFilm RenderJob::done_film() const {
+  const RenderImage done = image();
+  if (!done.image) return render::PartialFilm(request_.settings.width, request_.settings.height);
+  return render::PartialFilm::from_mean(*done.image, uint32_t(done.spp_done));
+}
+
+struct RenderJob::RangeRun {
   using Clock = std::chrono::steady_clock;
-  const auto& s = request_.settings;
-  set_work(s.spp, 0);
-  save_record();
-  RenderCoordinator coordinator(*scale_out_, id());
-  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url};
-  const auto start = Clock::now();
+  RangeRun(std::vector<render::SampleRange> done, int spp) : ranges(std::move(done)), spp_done(spp) {}
+  std::vector<render::SampleRange> ranges;
   int spp_done = 0;
   render::RenderStats stats;
+  Clock::time_point start = Clock::now(), kept = Clock::now();
+};
+
+void RenderJob::merged(RangeRun& run, const render::PartialFilm& film, render::SampleRange range,
+                       uint64_t rays) {
+  constexpr auto kKeepEvery = std::chrono::seconds(5);
+  run.ranges.push_back(range);
+  run.spp_done += range.count();
+  run.stats.samples += uint64_t(range.count()) * film.pixel_count();
+  run.stats.rays += rays;
+  const auto now = RangeRun::Clock::now();
+  publish(film.mean(), run.spp_done, run.stats, std::chrono::duration<double>(now - run.start).count(),
+          run.ranges);
+  if (now - run.kept < kKeepEvery) return;
+  checkpoint();
+  run.kept = now;
+}
+
+// Work items on Redis; the image of the ranges merged so far is published as they arrive.
+bool RenderJob::render_split() {
+  const auto& s = request_.settings;
+  RangeRun run{done_ranges(), spp_done()};
+  const auto items = render::ranges_outside(s.spp, scale_out_->item_spp, run.ranges);
+  set_work(s.spp, run.spp_done);
+  save_record();
+  if (run.spp_done > 0) spdlog::info("render {} continues after {} spp", id(), run.spp_done);
+  RenderCoordinator coordinator(*scale_out_, id());
+  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url};
   const bool done = coordinator.run(
-      description, s, [this] { return interrupt_requested() || cancel_flag().load(); },
-      [&](const render::PartialFilm& merged, render::SampleRange range, uint64_t rays) {
-        spp_done += range.count();
-        stats.samples += uint64_t(range.count()) * merged.pixel_count();
-        stats.rays += rays;
+      description, items, done_film(), [this] { return interrupt_requested() || cancel_flag().load(); },
+      [&](const render::PartialFilm& film, render::SampleRange range, uint64_t rays) {
         add_work_done(range.count());
-        publish(merged.mean(), spp_done, stats, std::chrono::duration<double>(Clock::now() - start).count());
+        merged(run, film, range, rays);
       });
-  if (done) checkpoint();
+  if (done || interrupt_requested()) checkpoint();
   return done;
+}
+
+// A render split over Redis, continued without it: the ranges it lacks, rendered here.
+bool RenderJob::render_ranges_here() {
+  constexpr int kRangeSpp = 32;  // samples per pixel between published images, as render_here's passes
+  const auto& s = request_.settings;
+  render::Renderer renderer(request_.scene, request_.lighting, s, envmap_);
+  RangeRun run{done_ranges(), spp_done()};
+  auto film = done_film();
+  const int64_t tiles = renderer.tile_count();
+  set_work(tiles * s.spp, tiles * run.spp_done);
+  save_record();
+  spdlog::info("render {} continues here after {} spp", id(), run.spp_done);
+  for (const auto range : render::ranges_outside(s.spp, kRangeSpp, run.ranges)) {
+    const auto partial =
+        interrupt_requested()
+            ? std::nullopt
+            : renderer.render_range(range, cancel_flag(), [this, range] { add_work_done(range.count()); });
+    if (!partial) {
+      if (interrupt_requested()) checkpoint();
+      return false;
+    }
+    film.merge(partial->film);
+    merged(run, film, range, partial->rays);
+  }
+  checkpoint();
+  return true;
 }
 
 void RenderJob::describe(nlohmann::json& out) const {

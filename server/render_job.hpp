@@ -2,7 +2,9 @@
 // A render as a background job: builds the renderer, then renders progressive passes (1, 1, 2, 4, ...
 // samples per pixel, capped) so a valid image exists after the first pass. Progress counts pixel samples
 // per finished tile; the image and the statistics are published after every pass, and with a state
-// store the job keeps its record and image there after every pass, so a restart can continue it.
+// store the job keeps its record and image there after every pass, so a restart can continue it. Split
+// over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
+// the image as each range is merged and keeps it every few seconds.
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -67,8 +69,18 @@ class RenderJob : public Job {
  private:
   bool render_here();
   bool render_split();
-  // The image over `spp_done` samples per pixel, and what this run traced for it in `render_s`.
-  void publish(Image image, int spp_done, render::RenderStats run_stats, double render_s);
+  bool render_ranges_here();
+  // The ranges done and the film holding them, from the image of an earlier run.
+  std::vector<render::SampleRange> done_ranges() const;
+  render::PartialFilm done_film() const;
+  // What a merged range changes: the ranges done, the image, the statistics and, every few seconds,
+  // the stored image.
+  struct RangeRun;
+  void merged(RangeRun& run, const render::PartialFilm& film, render::SampleRange range, uint64_t rays);
+  // The image over `spp_done` samples per pixel (in `ranges_done` when they are not [0, spp_done)), and
+  // what this run traced for it in `render_s`.
+  void publish(Image image, int spp_done, render::RenderStats run_stats, double render_s,
+               std::vector<render::SampleRange> ranges_done = {});
   void checkpoint();
   void keep_result_memory();  // the image of the passes done, then the record naming it
   int skip_done_passes(std::vector<int>& passes) const;
@@ -85,6 +97,7 @@ class RenderJob : public Job {
   mutable std::mutex mutex_;
   std::shared_ptr<const Image> image_;
   int spp_done_ = 0;
+  std::vector<render::SampleRange> ranges_done_;  // see RenderRecord::ranges_done
   render::RenderStats stats_;
   double render_s_ = 0;  // time spent in passes (not building the scene), for the rates
   std::string image_file_, envmap_fingerprint_;

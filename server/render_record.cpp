@@ -1,5 +1,6 @@
 #include "server/render_record.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace lp::server {
@@ -13,6 +14,28 @@ int64_t to_ms(Clock::time_point t) {
   return std::chrono::duration_cast<std::chrono::milliseconds>(t.time_since_epoch()).count();
 }
 
+nlohmann::json ranges_json(const std::vector<render::SampleRange>& ranges) {
+  auto out = nlohmann::json::array();
+  for (const auto& r : ranges) out.push_back({r.first, r.end});
+  return out;
+}
+
+// Disjoint ranges [first, end) that hold `spp_done` samples per pixel together.
+std::vector<render::SampleRange> parse_ranges(const nlohmann::json& j, int spp_done) {
+  std::vector<render::SampleRange> out;
+  for (const auto& r : j) out.push_back({r.at(0).get<uint32_t>(), r.at(1).get<uint32_t>()});
+  std::sort(out.begin(), out.end(), [](auto a, auto b) { return a.first < b.first; });
+  int64_t total = 0;
+  for (size_t i = 0; i < out.size(); ++i) {
+    if (out[i].end <= out[i].first || (i > 0 && out[i].first < out[i - 1].end))
+      throw std::invalid_argument("the sample ranges done overlap or are empty");
+    total += out[i].count();
+  }
+  if (!out.empty() && total != spp_done)
+    throw std::invalid_argument("the sample ranges done do not hold the samples done");
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json record_json(const RenderRecord& r) {
@@ -24,6 +47,7 @@ nlohmann::json record_json(const RenderRecord& r) {
           {"error", r.error ? nlohmann::json{{"code", r.error->code}, {"message", r.error->message}}
                             : nlohmann::json()},
           {"spp_done", r.spp_done},
+          {"sample_ranges_done", ranges_json(r.ranges_done)},
           {"image_file", r.image_file},
           {"envmap_fingerprint", r.envmap_fingerprint},
           {"elapsed_s", r.elapsed_s},
@@ -46,6 +70,7 @@ RenderRecord parse_render_record(const nlohmann::json& j) {
     r.error = JobError{e.at("code").get<std::string>(), e.at("message").get<std::string>()};
   r.spp_done = j.at("spp_done").get<int>();
   r.image_file = j.at("image_file").get<std::string>();
+  r.ranges_done = parse_ranges(j.value("sample_ranges_done", nlohmann::json::array()), r.spp_done);
   r.envmap_fingerprint = j.at("envmap_fingerprint").get<std::string>();
   r.elapsed_s = j.at("elapsed_s").get<double>();
   r.stats = {j.at("samples").get<uint64_t>(), j.at("rays").get<uint64_t>()};

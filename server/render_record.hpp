@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "engine/render/partial_film.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/job.hpp"
 
@@ -19,6 +21,9 @@ struct RenderRecord {
   JobStatus status = JobStatus::Queued;
   std::optional<JobError> error;
   int spp_done = 0;
+  // The sample ranges in the image when they are not [0, spp_done): a render split over Redis merges
+  // ranges as they arrive. Empty for a render that ran here.
+  std::vector<render::SampleRange> ranges_done;
   std::string image_file;          // in the renders folder; empty before the first pass
   std::string envmap_fingerprint;  // envmap_fingerprint() of the map; empty before the first pass
   double elapsed_s = 0;

@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "engine/render/partial_film_codec.hpp"
+#include "server/render_arena.hpp"
 #include "server/render_description.hpp"
 #include "server/render_keys.hpp"
 #include "server/render_requests.hpp"
@@ -21,6 +22,7 @@ namespace keys = render_keys;
 constexpr auto kItemWait = 1000ms;
 constexpr auto kIdleWait = 300ms;
 constexpr auto kCancelCheckEvery = 100ms;
+constexpr int kPartialLifetimeS = 3600;  // the coordinator merges a partial within a second of its notice
 
 // Asks Redis whether a render was cancelled, at most every kCancelCheckEvery whichever render thread
 // asks; sets `cancel` when it was (or the worker is stopping).
@@ -77,9 +79,10 @@ RenderWorker::~RenderWorker() {
 
 void RenderWorker::loop(const std::stop_token& stop) {
   spdlog::info("worker {}: taking render items from {}", consumer_, app_.options.redis->url());
+  RenderArena arena(app_.options.threads, app_.options.render_priority);
   while (!stop.stop_requested()) {
     try {
-      if (const auto item = next_item()) take(*item, stop);
+      if (const auto item = next_item()) arena.execute([&] { take(*item, stop); });
     } catch (const RedisError& e) {
       // A render that ended while this worker waited on its stream: read the active renders again.
       if (ended_render(e)) continue;
@@ -150,6 +153,7 @@ bool RenderWorker::render(const std::string& id, render::SampleRange range, cons
   const auto bytes = render::encode_partial(*partial);
   redis_.hset(keys::partials(id), field,
               std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  redis_.expire(keys::partials(id), kPartialLifetimeS);  // a duplicate after the render ended goes too
   redis_.xadd(keys::done(id), {{"range", field}, {"rays", std::to_string(partial->rays)}});
   spdlog::info("worker {}: render {} samples {} done in {:.3f} s", consumer_, id, field,
                std::chrono::duration<double>(Clock::now() - start).count());

@@ -4,7 +4,8 @@
 // dead worker held longer than --redis-claim-timeout-s first, with XAUTOCLAIM), renders each sample range
 // into a partial film, uploads it under its range, acknowledges the item and notifies the coordinator.
 // It checks the render's cancel key between tiles, so a cancel stops it within the item. The renderer of
-// the last render is kept for its next items; its map comes through a MapFetcher.
+// the last render is kept for its next items; its map comes through a MapFetcher. Items render in a
+// RenderArena, at --render-priority like local renders.
 #include <atomic>
 #include <memory>
 #include <optional>

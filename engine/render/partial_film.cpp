@@ -1,5 +1,7 @@
 #include "engine/render/partial_film.hpp"
 
+#include <algorithm>
+
 #include "engine/core/error.hpp"
 
 namespace lp::render {
@@ -9,6 +11,30 @@ PartialFilm::PartialFilm(int width, int height)
       height_(height),
       sums_(size_t(width) * size_t(height) * 3),
       counts_(size_t(width) * size_t(height)) {}
+
+std::vector<SampleRange> ranges_outside(int spp, int per_item, std::vector<SampleRange> done) {
+  std::sort(done.begin(), done.end(), [](auto a, auto b) { return a.first < b.first; });
+  std::vector<SampleRange> out;
+  auto cover = [&](uint32_t from, uint32_t to) {
+    for (uint32_t first = from; first < to; first += uint32_t(per_item))
+      out.push_back({first, std::min(to, first + uint32_t(per_item))});
+  };
+  uint32_t next = 0;
+  for (const auto& d : done) {
+    cover(next, std::min(d.first, uint32_t(spp)));
+    next = std::max(next, d.end);
+  }
+  cover(next, uint32_t(spp));
+  return out;
+}
+
+PartialFilm PartialFilm::from_mean(const Image& mean, uint32_t count) {
+  PartialFilm film(mean.width(), mean.height());
+  const auto pixels = mean.data();
+  for (size_t i = 0; i < film.sums_.size(); ++i) film.sums_[i] = double(pixels[i]) * count;
+  std::fill(film.counts_.begin(), film.counts_.end(), count);
+  return film;
+}
 
 void PartialFilm::merge(const PartialFilm& other) {
   if (other.width_ != width_ || other.height_ != height_)

@@ -16,10 +16,16 @@ struct SampleRange {
   bool operator==(const SampleRange&) const = default;
 };
 
+// The ranges of at most `per_item` samples that cover [0, spp) outside `done` (disjoint ranges, in any
+// order), in order.
+std::vector<SampleRange> ranges_outside(int spp, int per_item, std::vector<SampleRange> done);
+
 class PartialFilm {
  public:
   PartialFilm() = default;
   PartialFilm(int width, int height);
+  // The film of `count` samples per pixel whose mean is `mean` (a render continued from its image).
+  static PartialFilm from_mean(const Image& mean, uint32_t count);
   // The bytes a partial of width x height pixels holds.
   static int64_t memory_bytes(int64_t width, int64_t height) {
     return width * height * int64_t(3 * sizeof(double) + sizeof(uint32_t));

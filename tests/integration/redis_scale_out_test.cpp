@@ -4,8 +4,10 @@
 // within float rounding of the sums (1e-5 relative); a sample counted twice or lost would change it far
 // more, and spp_done and samples say every pixel got exactly spp samples.
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <memory>
@@ -19,7 +21,9 @@
 #include "support/poll_until.hpp"
 #include "support/redis_process.hpp"
 #include "support/server_process.hpp"
+#include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
+#include "support/thread_sched.hpp"
 
 namespace lp {
 namespace {
@@ -111,18 +115,22 @@ struct Cluster {
   std::unique_ptr<test::ServerProcess> api;
   std::vector<std::unique_ptr<test::ServerProcess>> workers;
 
-  Cluster(int workers_count, int item_spp, int claim_timeout_s = 30) {
-    const std::vector<std::string> common = {"--redis",
-                                             redis.url(),
-                                             "--redis-item-spp",
-                                             std::to_string(item_spp),
-                                             "--redis-claim-timeout-s",
-                                             std::to_string(claim_timeout_s)};
+  std::vector<std::string> common;
+
+  Cluster(int workers_count, int item_spp, int claim_timeout_s = 30,
+          std::vector<std::string> api_flags = {}) {
+    common = {"--redis",
+              redis.url(),
+              "--redis-item-spp",
+              std::to_string(item_spp),
+              "--redis-claim-timeout-s",
+              std::to_string(claim_timeout_s)};
     auto with = [&](std::vector<std::string> extra) {
       extra.insert(extra.end(), common.begin(), common.end());
       return extra;
     };
-    api = std::make_unique<test::ServerProcess>(with({"--role", "api"}));
+    api_flags.insert(api_flags.end(), {"--role", "api"});
+    api = std::make_unique<test::ServerProcess>(with(api_flags));
     for (int i = 0; i < workers_count; ++i)
       workers.push_back(std::make_unique<test::ServerProcess>(with({"--role", "worker", "--threads", "1"})));
   }
@@ -177,6 +185,65 @@ TEST(RedisScaleOut, ARenderSurvivesRedisRestarting) {
   const json st = wait_finished(*cluster.api, id);
   expect_whole(st, 64);
   EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
+}
+
+TEST(RedisScaleOut, ARenderSurvivesRedisLosingEveryWrite) {
+  SKIP_WITHOUT_REDIS();
+  const std::string request = body(192, 13);
+  const Image reference = single_process_image(request);
+  Cluster cluster(2, 4);
+  const std::string id = submit(*cluster.api, request);
+  ASSERT_TRUE(wait_log(*cluster.workers[0], "render " + id + " samples", 3));
+  EXPECT_LT(status(*cluster.api, id)["spp_done"], 192);
+  cluster.redis.restart_empty();  // no description, items, group, partials or notices
+  const json st = wait_finished(*cluster.api, id);
+  expect_whole(st, 192);
+  EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
+  EXPECT_GE(count_lines(cluster.api->log(), "issued again"), 1) << cluster.api->log();
+}
+
+TEST(RedisScaleOut, AWorkerRendersItemsAtTheRenderPriorityAndTakesNoRenderOfItsOwn) {
+  SKIP_WITHOUT_REDIS();
+  Cluster cluster(0, 4096);
+  test::ServerProcess worker({"--redis", cluster.redis.url(), "--role", "worker", "--threads", "2"});
+  const auto refused = worker.client()->Post("/api/v1/renders", body(4, 1), "application/json");
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 409);
+  EXPECT_EQ(json::parse(refused->body)["error"]["code"], "worker_only") << refused->body;
+  const std::string id = submit(*cluster.api, body(4096, 3));
+  ASSERT_TRUE(wait_log(worker, "render " + id + " samples")) << worker.log();
+  std::this_thread::sleep_for(200ms);  // the arena's threads join the item
+  const auto threads = test::threads_of(worker.pid());
+  test::expect_render_threads_at(threads, {std::min(threads.main.nice + 10, 19), SCHED_OTHER}, 2);
+  cluster.api->client()->Delete("/api/v1/renders/" + id);
+}
+
+// A split render the coordinator's stop interrupted goes on from the ranges it had merged: on Redis again
+// after a restart, and on a server without Redis that renders the ranges left itself.
+TEST(RedisScaleOut, AnInterruptedSplitRenderResumesFromTheRangesItMerged) {
+  SKIP_WITHOUT_REDIS();
+  constexpr int kSpp = 384;
+  const std::string request = body(kSpp, 17);
+  const Image reference = single_process_image(request);
+  for (const bool with_redis : {true, false}) {
+    SCOPED_TRACE(with_redis ? "resumed with Redis" : "resumed without Redis");
+    test::TempDir state;
+    const std::vector<std::string> kept = {"--state-dir", state.path().string(), "--resume-interrupted"};
+    Cluster cluster(1, 8, 30, kept);
+    const std::string id = submit(*cluster.api, request);
+    poll(*cluster.api, id, [](const json& st) { return st["spp_done"] >= 48 || st["status"] != "running"; });
+    cluster.api->send_signal(SIGTERM);
+    ASSERT_TRUE(cluster.api->wait_exit(30s).has_value());
+    std::vector<std::string> flags = kept;
+    if (with_redis) flags.insert(flags.end(), cluster.common.begin(), cluster.common.end());
+    if (with_redis) flags.insert(flags.end(), {"--role", "api"});
+    test::ServerProcess restarted(flags);
+    const json st = wait_finished(restarted, id);
+    expect_whole(st, kSpp);
+    EXPECT_LT(max_relative_difference(reference, image(restarted, id)), 1e-5);
+    EXPECT_EQ(count_lines(restarted.log(), with_redis ? "continues after" : "continues here after"), 1)
+        << restarted.log();
+  }
 }
 
 TEST(RedisScaleOut, CancelReachesEveryWorker) {

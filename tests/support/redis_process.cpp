@@ -89,6 +89,16 @@ void RedisProcess::start() {
   }
 }
 
+void RedisProcess::restart_empty() {
+  kill(pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_.path()))
+    if (entry.path().filename() != "redis.log") std::filesystem::remove_all(entry.path());
+  start();
+}
+
 void RedisProcess::stop() {
   if (pid_ < 0) return;
   kill(pid_, SIGTERM);

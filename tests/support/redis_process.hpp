@@ -1,7 +1,7 @@
 #pragma once
 // A real redis-server for a test: on a free loopback port, its data and append-only file in a fresh
 // directory (appendonly yes), stopped at the end. restart() stops it (SIGTERM: it writes its append-only
-// file) and starts it again on the same port and directory.
+// file) and starts it again on the same port and directory; restart_empty() starts it without its data.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -28,6 +28,8 @@ class RedisProcess {
     stop();
     start();
   }
+  // Kills it (SIGKILL) and deletes its data, then starts it empty: a Redis that lost every write.
+  void restart_empty();
 
  private:
   TempDir dir_;

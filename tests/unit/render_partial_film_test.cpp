@@ -77,6 +77,26 @@ TEST(RenderPartialFilm, MeanIsSumOverCount) {
   EXPECT_THROW(film.merge(PartialFilm(1, 1)), Error);
 }
 
+TEST(RenderPartialFilm, FromAMeanHoldsItsSumsAndCounts) {
+  Image mean(2, 1);
+  mean.set(0, 0, {0.5f, 1.0f, 2.0f});
+  mean.set(1, 0, {0.25f, 0.0f, 4.0f});
+  const PartialFilm film = PartialFilm::from_mean(mean, 8);
+  EXPECT_EQ(film.count(0), 8u);
+  EXPECT_EQ(film.count(1), 8u);
+  EXPECT_EQ(film.sums()[2], 16.0);
+  EXPECT_EQ(film.sums()[3], 2.0);
+  EXPECT_EQ(film.mean().at(1, 0).z, 4.0f);
+}
+
+TEST(RenderPartialFilm, RangesOutsideCoverWhatIsNotDone) {
+  using R = std::vector<SampleRange>;
+  EXPECT_EQ(ranges_outside(40, 16, {}), (R{{0, 16}, {16, 32}, {32, 40}}));
+  EXPECT_EQ(ranges_outside(64, 16, {{16, 32}}), (R{{0, 16}, {32, 48}, {48, 64}}));
+  EXPECT_EQ(ranges_outside(64, 16, {{48, 56}, {0, 8}}), (R{{8, 24}, {24, 40}, {40, 48}, {56, 64}}));
+  EXPECT_EQ(ranges_outside(32, 16, {{0, 16}, {16, 32}}), R{});
+}
+
 TEST(RenderPartialFilm, CodecRoundTripsAndRefusesBrokenBytes) {
   Renderer renderer(*scene_preset("sphere"), lighting(LightingMode::EnvMap), settings(8), sky_map());
   const RangePartial partial = render_range(renderer, 2, 5);

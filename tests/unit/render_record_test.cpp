@@ -1,0 +1,53 @@
+// A render's record in the state directory: it reads back as written, the sample ranges of a render
+// split over Redis among it, and a record whose ranges overlap or do not hold its samples is refused.
+#include "server/render_record.hpp"
+
+#include <gtest/gtest.h>
+
+namespace lp::server {
+namespace {
+
+RenderRecord split_record() {
+  RenderRecord r;
+  r.id = "3f9c0a7d12e4b856";
+  r.request = {{"envmap", "default"}};
+  r.status = JobStatus::Interrupted;
+  r.spp_done = 24;
+  r.ranges_done = {{16, 32}, {0, 8}};
+  r.image_file = "3f9c0a7d12e4b856.24.exr";
+  r.envmap_fingerprint = "ab-4x2";
+  return r;
+}
+
+TEST(RenderRecord, ReadsBackWithTheRangesDone) {
+  const RenderRecord back = parse_render_record(record_json(split_record()));
+  EXPECT_EQ(back.spp_done, 24);
+  ASSERT_EQ(back.ranges_done.size(), 2u);
+  EXPECT_EQ(back.ranges_done[0], (render::SampleRange{0, 8}));
+  EXPECT_EQ(back.ranges_done[1], (render::SampleRange{16, 32}));
+  EXPECT_EQ(back.image_file, "3f9c0a7d12e4b856.24.exr");
+}
+
+TEST(RenderRecord, ARecordWithoutRangesIsTheFirstSamples) {
+  auto json = record_json(split_record());
+  json.erase("sample_ranges_done");
+  EXPECT_TRUE(parse_render_record(json).ranges_done.empty());
+}
+
+TEST(RenderRecord, RangesThatOverlapOrMissSamplesAreRefused) {
+  auto overlapping = record_json(split_record());
+  overlapping["sample_ranges_done"] = {{0, 16}, {8, 16}};
+  EXPECT_THROW(parse_render_record(overlapping), std::invalid_argument);
+  auto short_of_samples = record_json(split_record());
+  short_of_samples["sample_ranges_done"] = {{0, 8}};
+  EXPECT_THROW(parse_render_record(short_of_samples), std::invalid_argument);
+  auto empty_range = record_json(split_record());
+  empty_range["sample_ranges_done"] = {{8, 8}, {0, 24}};
+  EXPECT_THROW(parse_render_record(empty_range), std::invalid_argument);
+  auto not_pairs = record_json(split_record());
+  not_pairs["sample_ranges_done"] = {"0-24"};
+  EXPECT_THROW(parse_render_record(not_pairs), std::exception);
+}
+
+}  // namespace
+}  // namespace lp::server
