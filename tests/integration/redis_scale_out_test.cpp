@@ -10,14 +10,17 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+#include <yaml-cpp/yaml.h>
 
 #include "engine/image/image_io.hpp"
+#include "support/held_port.hpp"
 #include "support/poll_until.hpp"
 #include "support/redis_process.hpp"
 #include "support/server_process.hpp"
@@ -155,6 +158,52 @@ TEST(RedisScaleOut, ThreeWorkersGiveTheImageOfOneProcess) {
   EXPECT_GE(items, 2 * 12);  // 12 items, each started and done
   EXPECT_EQ(count_lines(cluster.api->log(), "fetched map"), 0);
   for (const auto& w : cluster.workers) EXPECT_EQ(count_lines(w->log(), "fetched map"), 0);  // all hold it
+}
+
+// docker/compose.scale-out.yaml's commands, on loopback: the api and worker services' flags (after the
+// flags the image's entrypoint gives: host, port, folders) with the service names mapped to loopback
+// addresses and each worker's state folder to one of its own; Redis keeps an append-only file as the
+// restart test needs. Three workers and the api server render a job to the single-process image.
+std::vector<std::string> compose_command(const YAML::Node& compose, const std::string& service,
+                                         const std::map<std::string, std::string>& mapped) {
+  std::vector<std::string> out;
+  for (const auto& arg : compose["services"][service]["command"]) {
+    const auto text = arg.as<std::string>();
+    out.push_back(mapped.contains(text) ? mapped.at(text) : text);
+  }
+  return out;
+}
+
+TEST(RedisScaleOut, TheComposeFilesCommandsRenderAJobOverThreeWorkers) {
+  SKIP_WITHOUT_REDIS();
+  const YAML::Node compose = YAML::LoadFile(LIGHTPROBE_COMPOSE_SCALE_OUT);
+  const auto redis_command = compose["services"]["redis"]["command"].as<std::vector<std::string>>();
+  EXPECT_EQ(redis_command, (std::vector<std::string>{"redis-server", "--appendonly", "yes"}));
+  test::RedisProcess redis;
+  int api_port = 0;
+  {
+    test::HeldPort free(test::HeldPort::Mode::BoundOnly);
+    api_port = free.port();
+  }
+  const std::string api_url = "http://127.0.0.1:" + std::to_string(api_port);
+  std::vector<std::unique_ptr<test::TempDir>> worker_states;
+  std::vector<std::unique_ptr<test::ServerProcess>> workers;
+  std::map<std::string, std::string> mapped = {{"redis://redis:6379", redis.url()}, {"http://api:8080", api_url}};
+  auto api_flags = compose_command(compose, "api", mapped);
+  api_flags.insert(api_flags.begin(), {"--port", std::to_string(api_port)});
+  test::ServerProcess api(api_flags);
+  for (int i = 0; i < 3; ++i) {
+    worker_states.push_back(std::make_unique<test::TempDir>());
+    mapped["/tmp/lightprobe-state"] = worker_states.back()->path().string();
+    workers.push_back(std::make_unique<test::ServerProcess>(compose_command(compose, "worker", mapped)));
+  }
+  const std::string request = body(64, 19);
+  const std::string id = submit(api, request);
+  expect_whole(wait_finished(api, id), 64);
+  EXPECT_LT(max_relative_difference(single_process_image(request), image(api, id)), 1e-5);
+  int items = 0;
+  for (const auto& w : workers) items += count_lines(w->log(), "render " + id + " samples");
+  EXPECT_EQ(items, 2 * 4);  // 4 items of the default 16 spp, each started and done once
 }
 
 TEST(RedisScaleOut, AWorkerKilledMidItemLeavesItToAnother) {
