@@ -205,7 +205,8 @@ bool RenderJob::render_split() {
   set_work(s.spp, 0);
   save_record();
   RenderCoordinator coordinator(*scale_out_, id());
-  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url};
+  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url,
+                                      scale_out_->bundles->publish(request_.scene)};
   const auto start = Clock::now();
   int spp_done = 0;
   render::RenderStats stats;
