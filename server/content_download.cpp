@@ -47,7 +47,7 @@ class Receiver {
     if (!res)
       throw std::runtime_error(
           fmt::format("cannot fetch {} from {}: {}", what_, from, httplib::to_string(res.error())));
-    download_.memory.resize(int64_t(download_.bytes.size()));
+    download_.memory.resize(int64_t(download_.bytes.capacity()));  // what the string holds
     return std::move(download_);
   }
 
