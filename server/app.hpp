@@ -9,6 +9,7 @@
 #include "server/envmap_registry.hpp"
 #include "server/http_metrics.hpp"
 #include "server/job_manager.hpp"
+#include "server/mesh_bundles.hpp"
 #include "server/model_cache.hpp"
 #include "server/options.hpp"
 #include "server/render_counters.hpp"
@@ -38,6 +39,7 @@ struct App {
   EnvMapRegistry envmaps;
   AssetRegistry assets;               // model files uploaded for scenes (stored_assets.hpp)
   ModelCache models;                  // the models of scenes' mesh objects, loaded when a request names them
+  MeshBundles bundles;                // the models' files, for the workers of split renders (--redis)
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};  // render event streams open now
   std::atomic<bool> ready{false};     // the maps to load at start and the state directory are loaded

@@ -23,29 +23,12 @@ void check_new_name(const App& app, const std::string& name) {
     throw api::ApiError(api::ErrorCode::Conflict, "an environment map named '" + name + "' exists");
 }
 
-// The pixels of an image being decoded, reserved before the reader allocates them: from the memory
-// budget (they stay with the map) and from the share of it that decodes in flight may take together.
-struct DecodeMemory {
-  MemoryReservation pixels, decoding;
-};
-
 void reserve_or_resize(MemoryReservation& r, const MemoryBudget& budget, int64_t bytes,
                        const std::string& what) {
   if (r)
     r.resize(bytes);
   else
     r = budget.reserve(bytes, MemoryUse::Transient, what);
-}
-
-ImageLimits budgeted_limits(App& app, DecodeMemory& memory) {
-  ImageLimits limits = image_limits(app.options);
-  limits.before_allocation = [&app, &memory](int64_t width, int64_t height) {
-    const int64_t bytes = EnvMap::image_bytes(width, height);
-    const std::string what = fmt::format("decoding a {}x{} image", width, height);
-    reserve_or_resize(memory.decoding, app.decoding, bytes, what + " (with the decodes in flight)");
-    reserve_or_resize(memory.pixels, app.memory, bytes, what);
-  };
-  return limits;
 }
 
 // An image in another projection becomes a lat-long map: its bad pixels are fixed (or refused, naming the
@@ -93,6 +76,17 @@ std::shared_ptr<const EnvMapEntry> register_image(App& app, const std::string& n
 }
 
 }  // namespace
+
+ImageLimits budgeted_limits(App& app, DecodeMemory& memory) {
+  ImageLimits limits = image_limits(app.options);
+  limits.before_allocation = [&app, &memory](int64_t width, int64_t height) {
+    const int64_t bytes = EnvMap::image_bytes(width, height);
+    const std::string what = fmt::format("decoding a {}x{} image", width, height);
+    reserve_or_resize(memory.decoding, app.decoding, bytes, what + " (with the decodes in flight)");
+    reserve_or_resize(memory.pixels, app.memory, bytes, what);
+  };
+  return limits;
+}
 
 ImageLimits image_limits(const Options& options) {
   ImageLimits limits;

@@ -25,4 +25,12 @@ void register_default_envmap(App& app);
 
 ImageLimits image_limits(const Options& options);
 
+// The pixels of an image being decoded, reserved before the reader allocates them: from the memory
+// budget (they stay with the map) and from the share of it that decodes in flight may take together.
+struct DecodeMemory {
+  MemoryReservation pixels, decoding;
+};
+// The limits of --max-pixels, reserving the pixels in `memory` before a reader allocates them.
+ImageLimits budgeted_limits(App& app, DecodeMemory& memory);
+
 }  // namespace lp::server

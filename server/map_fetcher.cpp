@@ -1,16 +1,25 @@
 #include "server/map_fetcher.hpp"
 
 #include <fmt/format.h>
-#include <httplib.h>
 #include <spdlog/spdlog.h>
 
 #include <span>
 #include <stdexcept>
 
+#include "server/content_download.hpp"
 #include "server/envmap_fingerprint.hpp"
 #include "server/envmap_loading.hpp"
 
 namespace lp::server {
+namespace {
+
+// The largest OpenEXR file of a map within the limits: float RGBA without compression (16 B/px), a
+// scanline's offset and chunk header (16 B) per row, and the header.
+int64_t largest_map_file_bytes(const ImageLimits& limits) {
+  return 16 * limits.max_pixels + 16 * int64_t(limits.max_dimension) + (1 << 20);
+}
+
+}  // namespace
 
 std::shared_ptr<const EnvMap> MapFetcher::get(const std::string& hash, const std::string& source_url) {
   {
@@ -37,24 +46,23 @@ std::shared_ptr<const EnvMap> MapFetcher::own(const std::string& hash) const {
 
 std::shared_ptr<const EnvMap> MapFetcher::fetch(const std::string& hash,
                                                 const std::string& source_url) const {
-  httplib::Client client(source_url);
-  client.set_connection_timeout(5);
-  client.set_read_timeout(60);
-  httplib::Headers headers;
-  if (!app_.options.auth_token.empty()) headers.emplace("Authorization", "Bearer " + app_.options.auth_token);
-  const auto res = client.Get("/api/v1/content/" + hash, headers);
-  if (!res)
-    throw std::runtime_error(
-        fmt::format("cannot fetch map {} from {}: {}", hash, source_url, httplib::to_string(res.error())));
-  if (res->status != 200)
-    throw std::runtime_error(
-        fmt::format("cannot fetch map {} from {}: status {}", hash, source_url, res->status));
-  const ImageLimits limits = image_limits(app_.options);
-  auto map = std::make_shared<const EnvMap>(
-      read_exr(std::span(reinterpret_cast<const uint8_t*>(res->body.data()), res->body.size()), limits));
+  DecodeMemory memory;
+  const ImageLimits limits = budgeted_limits(app_, memory);
+  Image image;
+  int64_t file_bytes = 0;
+  {
+    const Download download =
+        download_content(app_, source_url, hash, largest_map_file_bytes(limits), "the map " + hash);
+    file_bytes = int64_t(download.bytes.size());
+    image = read_exr(
+        std::span(reinterpret_cast<const uint8_t*>(download.bytes.data()), download.bytes.size()), limits);
+  }
+  auto map = std::make_shared<EnvMap>(std::move(image));
+  memory.pixels.set_use(MemoryUse::Held);
+  map->account_memory(app_.memory, std::move(memory.pixels));
   if (envmap_fingerprint(*map) != hash)
     throw std::runtime_error(fmt::format("the map fetched from {} is not {}", source_url, hash));
-  spdlog::info("fetched map {} from {} ({} bytes)", hash, source_url, res->body.size());
+  spdlog::info("fetched map {} from {} ({} bytes)", hash, source_url, file_bytes);
   return map;
 }
 

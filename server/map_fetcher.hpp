@@ -1,7 +1,9 @@
 #pragma once
 // The maps a worker renders with, by content hash (envmap_fingerprint.hpp): one of this server's own maps
 // when it holds the same pixels, else fetched from the coordinator (GET /api/v1/content/{hash}, float
-// OpenEXR), checked against the hash and kept for the next items (the last few, by last use).
+// OpenEXR, no larger than a map within --max-pixels can be), checked against the hash and kept for the
+// next items (the last few, by last use). The download and the decoded pixels are reserved in the memory
+// budget; a fetched map's pixels stay there, held, while it is kept or a renderer uses it.
 #include <list>
 #include <memory>
 #include <mutex>

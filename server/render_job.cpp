@@ -250,7 +250,8 @@ bool RenderJob::render_split() {
   save_record();
   if (run.spp_done > 0) spdlog::info("render {} continues after {} spp", id(), run.spp_done);
   RenderCoordinator coordinator(*scale_out_, id());
-  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url};
+  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url,
+                                      scale_out_->bundles->publish(request_.scene)};
   const bool done = coordinator.run(
       description, items, done_film(), [this] { return interrupt_requested() || cancel_flag().load(); },
       [&](const render::PartialFilm& film, render::SampleRange range, uint64_t rays) {

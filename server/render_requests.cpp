@@ -11,6 +11,12 @@
 namespace lp::server {
 
 int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
+  return resolve_meshes(scene, app, [&app](size_t, const std::string& path, const std::string& field) {
+    return resolve_mesh_path(app, path, field);
+  });
+}
+
+int64_t resolve_meshes(render::SceneDesc& scene, App& app, const MeshLocator& locate) {
   int64_t triangles = 0;
   const ModelLimits limits = api::model_limits(app.options.limits);
   for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -20,7 +26,7 @@ int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
       app.models.hold_builtin(mesh->model, "the " + mesh->path.string() + " preset's model");
     } else {
       const std::string field = fmt::format("scene.objects[{}].path", i);
-      mesh->path = resolve_mesh_path(app, mesh->path.string(), field);
+      mesh->path = locate(i, mesh->path.string(), field);
       try {
         mesh->model = app.models.get(mesh->path, limits);
       } catch (const MemoryBudgetError&) {

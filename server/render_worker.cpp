@@ -71,6 +71,7 @@ RenderWorker::RenderWorker(App& app, std::string consumer)
       redis_(*app.options.redis),
       cancel_check_(*app.options.redis, 5s),
       maps_(app),
+      bundles_(app),
       thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 RenderWorker::~RenderWorker() {
@@ -167,7 +168,11 @@ render::Renderer* RenderWorker::renderer_for(const std::string& id) {
   if (!text) return nullptr;
   const RenderDescription description = parse_description(*text);
   Loaded next{id, api::parse_render_request(description.request, app_.options.limits), nullptr};
-  resolve_meshes(next.request.scene, app_);
+  resolve_meshes(next.request.scene, app_, [&](size_t object, const std::string&, const std::string& field) {
+    const MeshReference* mesh = description.mesh(object);
+    if (!mesh) throw std::runtime_error("the render's description names no mesh bundle for " + field);
+    return bundles_.model_file(*mesh, description.source_url, field);
+  });
   const auto map = maps_.get(description.envmap_hash, description.source_url);
   next.renderer = std::make_unique<render::Renderer>(next.request.scene, next.request.lighting,
                                                      next.request.settings, map);

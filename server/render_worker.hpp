@@ -4,7 +4,8 @@
 // dead worker held longer than --redis-claim-timeout-s first, with XAUTOCLAIM), renders each sample range
 // into a partial film, uploads it under its range, acknowledges the item and notifies the coordinator.
 // It checks the render's cancel key between tiles, so a cancel stops it within the item. The renderer of
-// the last render is kept for its next items; its map comes through a MapFetcher. Items render in a
+// the last render is kept for its next items; its map comes through a MapFetcher, its meshes' files
+// through a BundleFetcher (never from this server's --data-dir or assets). Items render in a
 // RenderArena, at --render-priority like local renders.
 #include <atomic>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "api/render_request.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/app.hpp"
+#include "server/bundle_fetcher.hpp"
 #include "server/map_fetcher.hpp"
 #include "server/redis_client.hpp"
 
@@ -47,6 +49,7 @@ class RenderWorker {
   RedisClient redis_;
   RedisClient cancel_check_;  // asked from render threads between tiles
   MapFetcher maps_;
+  BundleFetcher bundles_;
   std::optional<Loaded> loaded_;
   std::jthread thread_;
 };

@@ -58,7 +58,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
                                          app.state.get());
   job->hold_memory(std::move(memory));
   job->count_in(&app.render_counters);
-  job->split_over(scale_out(app.options));
+  job->split_over(scale_out(app.options, app.bundles));
   const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
   job->save_record();
   if (!app.renders.submit(job)) {

@@ -129,7 +129,7 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
                                           job->image().image, app.state.get());
   next->hold_memory(std::move(memory));
   next->count_in(&app.render_counters);
-  next->split_over(scale_out(app.options));
+  next->split_over(scale_out(app.options, app.bundles));
   next->save_record();
   if (!app.renders.submit(next)) {
     if (app.renders.find(job->id()) != job)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sched.h>
 #include <signal.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,9 +18,10 @@
 #include <string>
 #include <thread>
 #include <vector>
-#include <yaml-cpp/yaml.h>
 
+#include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
+#include "support/archive_builder.hpp"
 #include "support/held_port.hpp"
 #include "support/poll_until.hpp"
 #include "support/redis_process.hpp"
@@ -115,27 +117,33 @@ bool wait_log(const test::ServerProcess& s, const std::string& what, int times =
 
 struct Cluster {
   test::RedisProcess redis;
+  std::vector<std::string> common;
   std::unique_ptr<test::ServerProcess> api;
   std::vector<std::unique_ptr<test::ServerProcess>> workers;
 
-  std::vector<std::string> common;
-
-  Cluster(int workers_count, int item_spp, int claim_timeout_s = 30,
-          std::vector<std::string> api_flags = {}) {
+  // `api_flags` and `worker_flags` are added to the api server's and to each worker's.
+  Cluster(int workers_count, int item_spp, int claim_timeout_s = 30, std::vector<std::string> api_flags = {},
+          const std::vector<std::string>& worker_flags = {}) {
     common = {"--redis",
               redis.url(),
               "--redis-item-spp",
               std::to_string(item_spp),
               "--redis-claim-timeout-s",
               std::to_string(claim_timeout_s)};
-    auto with = [&](std::vector<std::string> extra) {
-      extra.insert(extra.end(), common.begin(), common.end());
-      return extra;
-    };
     api_flags.insert(api_flags.end(), {"--role", "api"});
     api = std::make_unique<test::ServerProcess>(with(api_flags));
-    for (int i = 0; i < workers_count; ++i)
-      workers.push_back(std::make_unique<test::ServerProcess>(with({"--role", "worker", "--threads", "1"})));
+    for (int i = 0; i < workers_count; ++i) add_worker(worker_flags);
+  }
+
+  void add_worker(std::vector<std::string> flags = {}) {
+    flags.insert(flags.end(), {"--role", "worker", "--threads", "1"});
+    workers.push_back(std::make_unique<test::ServerProcess>(with(flags)));
+  }
+
+ private:
+  std::vector<std::string> with(std::vector<std::string> flags) const {
+    flags.insert(flags.end(), common.begin(), common.end());
+    return flags;
   }
 };
 
@@ -188,7 +196,8 @@ TEST(RedisScaleOut, TheComposeFilesCommandsRenderAJobOverThreeWorkers) {
   const std::string api_url = "http://127.0.0.1:" + std::to_string(api_port);
   std::vector<std::unique_ptr<test::TempDir>> worker_states;
   std::vector<std::unique_ptr<test::ServerProcess>> workers;
-  std::map<std::string, std::string> mapped = {{"redis://redis:6379", redis.url()}, {"http://api:8080", api_url}};
+  std::map<std::string, std::string> mapped = {{"redis://redis:6379", redis.url()},
+                                               {"http://api:8080", api_url}};
   auto api_flags = compose_command(compose, "api", mapped);
   api_flags.insert(api_flags.begin(), {"--port", std::to_string(api_port)});
   test::ServerProcess api(api_flags);
@@ -314,6 +323,14 @@ void upload_forest(const test::ServerProcess& s) {
   ASSERT_TRUE(r && r->status == 201) << (r ? r->body : "no answer");
 }
 
+// The bytes a server holds in its memory budget (GET /metrics).
+int64_t held_bytes(const test::ServerProcess& s) {
+  const auto r = s.client()->Get("/metrics");
+  const std::string line = "lightprobe_memory_used_bytes{use=\"held\"} ";
+  const size_t at = r && r->status == 200 ? r->body.find(line) : std::string::npos;
+  return at == std::string::npos ? -1 : std::stoll(r->body.substr(at + line.size()));
+}
+
 TEST(RedisScaleOut, WorkersFetchAMapTheyLackByItsHashOnce) {
   SKIP_WITHOUT_REDIS();
   const std::string request = body(32, 9, "forest");
@@ -323,13 +340,136 @@ TEST(RedisScaleOut, WorkersFetchAMapTheyLackByItsHashOnce) {
   EXPECT_EQ(wait_finished(single, single_id)["status"], "done");
   Cluster cluster(2, 4);
   upload_forest(*cluster.api);  // the workers hold only the built-in map
+  std::vector<int64_t> held_before;
+  for (const auto& w : cluster.workers) held_before.push_back(held_bytes(*w));
   const std::string id = submit(*cluster.api, request);
   expect_whole(wait_finished(*cluster.api, id), 32);
   EXPECT_LT(max_relative_difference(image(single, single_id), image(*cluster.api, id)), 1e-5);
-  for (const auto& w : cluster.workers) EXPECT_EQ(count_lines(w->log(), "fetched map"), 1) << w->log();
+  for (size_t i = 0; i < cluster.workers.size(); ++i) {
+    EXPECT_EQ(count_lines(cluster.workers[i]->log(), "fetched map"), 1) << cluster.workers[i]->log();
+    // The fetched map's pixels are held in the worker's memory budget while it keeps the map.
+    EXPECT_GE(held_bytes(*cluster.workers[i]) - held_before[i],
+              EnvMap::image_bytes(test::kRealMapWidth, test::kRealMapHeight));
+  }
   const auto unknown = cluster.api->client()->Get("/api/v1/content/0123456789abcdef-4x2");
   ASSERT_TRUE(unknown);
   EXPECT_EQ(unknown->status, 404);
+}
+
+// The textured quad of tests/data/models/obj (an OBJ, its MTL, an albedo and a normal map) as an uploaded
+// asset, and a render of an asset seen from above.
+const std::vector<std::string> kQuadFiles = {"quad.obj", "quad.mtl", "checker.png", "flat_normal.png"};
+
+std::string asset_body(int spp, int seed, const std::string& asset = "quad") {
+  const json camera = {{"position", {0.5, 0.5, 3}}, {"look_at", {0.5, 0.5, 0}}, {"up", {0, 1, 0}}};
+  const json quad = {{"type", "mesh"}, {"path", "assets/" + asset}};
+  return json{{"envmap", "default"}, {"scene", {{"camera", camera}, {"objects", {quad}}}},
+              {"width", kSize},      {"height", kSize},
+              {"spp", spp},          {"seed", seed}}
+      .dump();
+}
+
+std::string quad_file(const std::string& name) {
+  const auto bytes = test::read_bytes(test::model_path("obj/" + name));
+  return {bytes.begin(), bytes.end()};
+}
+
+void upload_quad(const test::ServerProcess& s) {
+  std::vector<test::ArchiveMember> members;
+  for (const auto& name : kQuadFiles) members.push_back(test::file_member(name, quad_file(name)));
+  const auto r =
+      s.client()->Post("/api/v1/assets?name=quad", test::make_archive(test::ArchiveFormat::Tar, members),
+                       "application/octet-stream");
+  ASSERT_TRUE(r && r->status == 201) << (r ? r->body : "no answer");
+}
+
+// The hash of the first mesh bundle a worker's log says it fetched.
+std::string fetched_bundle(const std::string& log) {
+  const std::string what = "fetched mesh bundle ";
+  const size_t at = log.find(what);
+  return at == std::string::npos
+             ? ""
+             : log.substr(at + what.size(), log.find(' ', at + what.size()) - at - what.size());
+}
+
+TEST(RedisScaleOut, WorkersFetchAMeshBundleTheyLackByItsHashOnce) {
+  SKIP_WITHOUT_REDIS();
+  const std::vector<std::pair<int, std::string>> renders = {{32, asset_body(32, 21)},
+                                                            {16, asset_body(16, 22)}};
+  test::ServerProcess single;
+  upload_quad(single);
+  std::vector<Image> references;
+  for (const auto& [spp, request] : renders) {
+    const std::string id = submit(single, request);
+    EXPECT_EQ(wait_finished(single, id)["status"], "done");
+    references.push_back(image(single, id));
+  }
+  // The workers hold neither the asset nor any file: their data and state directories are empty.
+  test::TempDir api_data, data_a, data_b;
+  Cluster cluster(0, 4, 30, {"--data-dir", api_data.path().string()});
+  for (const auto* data : {&data_a, &data_b}) cluster.add_worker({"--data-dir", data->path().string()});
+  upload_quad(*cluster.api);
+  std::vector<std::string> ids;
+  for (size_t i = 0; i < renders.size(); ++i) {
+    ids.push_back(submit(*cluster.api, renders[i].second));
+    expect_whole(wait_finished(*cluster.api, ids.back()), renders[i].first);
+    EXPECT_LT(max_relative_difference(references[i], image(*cluster.api, ids.back())), 1e-5);
+  }
+  // Kept across items and renders: a worker that rendered fetched the bundle once.
+  int working = 0;
+  std::string hash;
+  for (const auto& w : cluster.workers) {
+    const std::string log = w->log();
+    const bool rendered = count_lines(log, "render " + ids[0] + " samples") +
+                              count_lines(log, "render " + ids[1] + " samples") >
+                          0;
+    working += rendered;
+    EXPECT_EQ(count_lines(log, "fetched mesh bundle"), rendered ? 1 : 0) << log;
+    if (rendered) hash = fetched_bundle(log);
+  }
+  EXPECT_GE(working, 1);
+  const auto tar = cluster.api->client()->Get("/api/v1/content/" + hash);
+  ASSERT_TRUE(tar && tar->status == 200) << hash;
+  EXPECT_EQ(tar->get_header_value("Content-Type"), "application/x-tar");
+  for (const auto& name : kQuadFiles) EXPECT_NE(tar->body.find(quad_file(name)), std::string::npos) << name;
+}
+
+TEST(RedisScaleOut, AMeshBundleThatDoesNotMatchItsHashIsRefused) {
+  SKIP_WITHOUT_REDIS();
+  test::TempDir api_state;
+  Cluster cluster(0, 4, 30, {"--state-dir", api_state.path().string()});
+  upload_quad(*cluster.api);
+  const std::string id = submit(*cluster.api, asset_body(16, 3));
+  ASSERT_TRUE(wait_log(*cluster.api, "work items of")) << cluster.api->log();
+  // The texture changes after the render published its bundle's hash: the api server now sends files
+  // of another content under that hash.
+  std::ofstream(api_state.path() / "assets" / "quad" / "checker.png", std::ios::binary | std::ios::app)
+      << "x";
+  cluster.add_worker();
+  const json st = wait_finished(*cluster.api, id);
+  EXPECT_EQ(st["status"], "failed") << st.dump();
+  const std::string message = st["error"].value("message", "");
+  EXPECT_NE(message.find("does not match its hash"), std::string::npos) << message;
+  EXPECT_TRUE(cluster.workers[0]->alive());
+  EXPECT_EQ(count_lines(cluster.workers[0]->log(), "fetched mesh bundle"), 0);
+}
+
+TEST(RedisScaleOut, AWorkerRefusesAMeshBundleOverItsAssetLimit) {
+  SKIP_WITHOUT_REDIS();
+  Cluster cluster(1, 4, 30, {}, {"--max-asset-mb", "1", "--max-asset-files", "8"});
+  const std::string grid = test::grid_obj(300);  // 2 MiB of OBJ text
+  ASSERT_GT(grid.size(), size_t(2) << 20);
+  const auto r = cluster.api->client()->Post(
+      "/api/v1/assets?name=grid",
+      test::make_archive(test::ArchiveFormat::Tar, {test::file_member("grid.obj", grid)}),
+      "application/octet-stream");
+  ASSERT_TRUE(r && r->status == 201) << (r ? r->body : "no answer");
+  const json st = wait_finished(*cluster.api, submit(*cluster.api, asset_body(4, 1, "grid")));
+  EXPECT_EQ(st["status"], "failed") << st.dump();
+  const std::string message = st["error"].value("message", "");
+  EXPECT_NE(message.find("the mesh bundle"), std::string::npos) << message;
+  EXPECT_NE(message.find("is over"), std::string::npos) << message;
+  EXPECT_TRUE(cluster.workers[0]->alive());
 }
 
 TEST(RedisScaleOut, ARoleWithoutRedisIsRefusedAtStart) {
