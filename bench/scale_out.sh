@@ -2,9 +2,9 @@
 # Renders split over Redis Streams (README's Scale-out), end to end on loopback: a redis-server of its
 # own, an api server (--role api) and 1, then 2 workers (--role worker --threads 1); the same render
 # (materials preset, SIZE x SIZE, SPP samples per pixel, ITEM samples per item) timed from submission
-# to done. Prints samples/s per worker count and the overhead per item: the wall time the workers spent
-# beyond rendering (waiting for an item, encoding, uploading, the coordinator's merge), from the render
-# times the workers log, divided by the items.
+# to done. Prints samples/s per worker count (over the job's own running time, elapsed_s) and the
+# overhead per item: the time the workers spent beyond rendering (waiting for an item, encoding,
+# uploading, the coordinator's merge), from the render times the workers log, divided by the items.
 #   bench/scale_out.sh [BUILD_DIR] [SIZE] [SPP] [ITEM]      defaults: build 128 512 16
 set -euo pipefail
 build=${1:-build}
@@ -45,16 +45,18 @@ run() {  # $1 = workers now running; their logs are $work/worker*.log
   # The event stream ends with the job (checked every 250 ms): no polling processes on the measured cores.
   curl -sN "$api/renders/$id/events" >"$work/events"
   end=$(date +%s.%N)
-  status=$(grep '^data:' "$work/events" | tail -1 | sed 's/^data: //' | python3 -c 'import json,sys; print(json.load(sys.stdin)["status"])')
+  grep '^data:' "$work/events" | tail -1 | sed 's/^data: //' >"$work/status"
   cat "$work"/worker*.log | grep "render $id samples .* done in" | sed 's/.*done in \([0-9.]*\) s/\1/' >"$work/items"
-  python3 - "$1" "$start" "$end" "$work/items" "$size" "$spp" "$status" <<'PY'
-import sys
-workers, start, end, items, size, spp, status = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), sys.argv[4], int(sys.argv[5]), int(sys.argv[6]), sys.argv[7]
+  python3 - "$1" "$start" "$end" "$work/items" "$size" "$spp" "$work/status" <<'PY'
+import json, sys
+workers, start, end, items, size, spp = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), sys.argv[4], int(sys.argv[5]), int(sys.argv[6])
+status = json.load(open(sys.argv[7]))
 times = [float(t) for t in open(items).read().split()]
-wall = end - start
-overhead = (wall * workers - sum(times)) / len(times)
-print(f"{workers} worker(s): {status}, {wall:.2f} s, {size*size*spp/wall/1e6:.3f} M samples/s, "
-      f"{len(times)} items of {sum(times)/len(times)*1000:.0f} ms rendering, overhead {overhead*1000:.1f} ms/item")
+job = status["elapsed_s"]  # the server's own time from the job's start to its end
+overhead = (job * workers - sum(times)) / len(times)
+print(f"{workers} worker(s): {status['status']}, job {job:.2f} s ({end - start:.2f} s seen by the client), "
+      f"{size*size*spp/job/1e6:.3f} M samples/s, {len(times)} items of {sum(times)/len(times)*1000:.0f} ms "
+      f"rendering, overhead {overhead*1000:.1f} ms/item")
 PY
 }
 

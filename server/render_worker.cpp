@@ -20,7 +20,8 @@ using Clock = std::chrono::steady_clock;
 namespace keys = render_keys;
 
 constexpr auto kItemWait = 1000ms;
-constexpr auto kIdleWait = 300ms;
+constexpr auto kIdleWait = 50ms;  // between reads of the active renders while there is none
+constexpr auto kRetryWait = 300ms;  // after a failure
 constexpr auto kCancelCheckEvery = 100ms;
 constexpr int kPartialLifetimeS = 3600;  // the coordinator merges a partial within a second of its notice
 
@@ -88,10 +89,10 @@ void RenderWorker::loop(const std::stop_token& stop) {
       // A render that ended while this worker waited on its stream: read the active renders again.
       if (ended_render(e)) continue;
       spdlog::warn("worker {}: {}", consumer_, e.what());
-      std::this_thread::sleep_for(kIdleWait);
+      std::this_thread::sleep_for(kRetryWait);
     } catch (const std::exception& e) {
       spdlog::warn("worker {}: {}", consumer_, e.what());
-      std::this_thread::sleep_for(kIdleWait);
+      std::this_thread::sleep_for(kRetryWait);
     }
   }
 }
