@@ -120,7 +120,11 @@ bool RenderCoordinator::run(const RenderDescription& description,
     }
     read_notices(merged, kNoticeWait, on_merged);
     if (Clock::now() >= next_restore) {
-      restore(items, merged, on_merged);
+      try {
+        restore(items, merged, on_merged);
+      } catch (const RedisError& e) {  // Redis losing the group again meanwhile: the next round restores
+        spdlog::warn("render {}: cannot restore its items yet: {}", id_, e.what());
+      }
       next_restore = Clock::now() + kRestoreEvery;
     }
   }
