@@ -22,6 +22,7 @@
 #include "engine/image/image_io.hpp"
 #include "support/held_port.hpp"
 #include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 
 namespace lp {
@@ -66,9 +67,7 @@ class Api {
     ADD_FAILURE() << "render " << id << " did not reach the awaited state: " << st.dump();
     return st;
   }
-  json wait_done(const std::string& id) const {
-    return wait_for(id, [](const json& st) { return st["status"] != "queued" && st["status"] != "running"; });
-  }
+  json wait_done(const std::string& id) const { return wait_for(id, test::job_ended); }
   Image image(const std::string& id) const {
     const Reply r = get("/api/v1/renders/" + id + "/image?format=exr");
     EXPECT_EQ(r.status, 200) << r.body;

@@ -25,6 +25,7 @@
 #include "support/held_port.hpp"
 #include "support/poll_until.hpp"
 #include "support/redis_process.hpp"
+#include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
@@ -67,7 +68,7 @@ json poll(const test::ServerProcess& s, const std::string& id, Pred done) {
 }
 
 json wait_finished(const test::ServerProcess& s, const std::string& id) {
-  return poll(s, id, [](const json& st) { return st["status"] != "queued" && st["status"] != "running"; });
+  return poll(s, id, test::job_ended);
 }
 
 Image image(const test::ServerProcess& s, const std::string& id) {
@@ -289,7 +290,9 @@ TEST(RedisScaleOut, AnInterruptedSplitRenderResumesFromTheRangesItMerged) {
     const std::vector<std::string> kept = {"--state-dir", state.path().string(), "--resume-interrupted"};
     Cluster cluster(1, 8, 30, kept);
     const std::string id = submit(*cluster.api, request);
-    poll(*cluster.api, id, [](const json& st) { return st["spp_done"] >= 48 || st["status"] != "running"; });
+    const json before =
+        poll(*cluster.api, id, [](const json& st) { return st["spp_done"] >= 48 || test::job_ended(st); });
+    ASSERT_EQ(before["status"], "running") << before.dump();
     cluster.api->send_signal(SIGTERM);
     ASSERT_TRUE(cluster.api->wait_exit(30s).has_value());
     std::vector<std::string> flags = kept;

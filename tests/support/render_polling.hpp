@@ -14,13 +14,18 @@
 
 namespace lp::test {
 
+// A job has ended once it is neither queued nor running: done, failed, cancelled or interrupted.
+inline bool job_ended(const nlohmann::json& status) {
+  return status["status"] != "queued" && status["status"] != "running";
+}
+
 // `url` is the job's status, e.g. "/api/v1/prefilters/3f9c0a7d12e4b856".
 inline nlohmann::json finished_job(httplib::Client& client, const std::string& url) {
   using namespace std::chrono_literals;
   for (auto deadline = std::chrono::steady_clock::now() + 120s; std::chrono::steady_clock::now() < deadline;
        std::this_thread::sleep_for(20ms)) {
     const nlohmann::json st = reply(client.Get(url.c_str())).body_json();
-    if (st["status"] != "queued" && st["status"] != "running") return st;
+    if (job_ended(st)) return st;
   }
   ADD_FAILURE() << url << " did not finish";
   return {};
