@@ -5,6 +5,7 @@
 // (integral of radiance over the sphere) exactly: a coarse texel is the solid-angle mean of what it
 // covers, and the poles' thin rows count for what they are.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "engine/core/vec3.hpp"
@@ -23,8 +24,12 @@ class EnvMapLevels {
   // The finest level no wider than `max_width`.
   static int level_for_width(int width, int max_width);
 
-  int coarsest() const { return int(levels_.size()); }
-  const Image& level(int k) const { return k == 0 ? base_ : levels_[size_t(k) - 1]; }
+  int coarsest() const { return top_ ? int(levels_.size()) + 1 : 0; }
+  const Image& level(int k) const {
+    return k == 0 ? base_ : k == coarsest() ? top_->image() : levels_[size_t(k) - 1];
+  }
+  // The coarsest level as a map of its own, its image the level's (no copy); null for level 0 alone.
+  std::shared_ptr<const EnvMap> coarsest_map() const { return top_; }
   // Bilinear in level k (u wraps around, v is clamped at the poles).
   Rgb bilinear(int k, latlong::Uv uv) const;
   // Between the two levels around `level` (clamped to [0, coarsest]), bilinear in each.
@@ -34,7 +39,8 @@ class EnvMapLevels {
 
  private:
   const Image& base_;
-  std::vector<Image> levels_;
+  std::vector<Image> levels_;          // 1 .. coarsest - 1
+  std::shared_ptr<const EnvMap> top_;  // the coarsest
 };
 
 }  // namespace lp
