@@ -50,6 +50,7 @@ Image unweighted(const MipLevel& level, const Rgb& power) {
 // take 16 bytes a pixel while the levels are made.
 EnvMapLevels::EnvMapLevels(const EnvMap& map, int coarsest) : base_(map.image()) {
   const Image& image = map.image();
+  images_.push_back(&base_);
   if (coarsest < 1 || (image.width() == 1 && image.height() == 1)) return;
   MipLevel current = downsample(image.width(), image.height(), kChannels,
                                 [&](int y, float* scratch) { return weighted_row(image, y, scratch); });
@@ -60,6 +61,8 @@ EnvMapLevels::EnvMapLevels(const EnvMap& map, int coarsest) : base_(map.image())
   }
   top_ = std::make_shared<const EnvMap>(std::move(levels_.back()));
   levels_.pop_back();
+  for (const Image& level : levels_) images_.push_back(&level);
+  images_.push_back(&top_->image());
 }
 
 int64_t EnvMapLevels::memory_bytes(int width, int height, int coarsest) {

@@ -19,15 +19,15 @@ class EnvMapLevels {
  public:
   // Levels 1..`coarsest` of `map` (level 0 is the map's own image, referred to, not copied).
   EnvMapLevels(const EnvMap& map, int coarsest);
+  EnvMapLevels(const EnvMapLevels&) = delete;  // it points into itself
+  EnvMapLevels& operator=(const EnvMapLevels&) = delete;
   // The bytes the levels above 0 take for a width x height map.
   static int64_t memory_bytes(int width, int height, int coarsest);
   // The finest level no wider than `max_width`.
   static int level_for_width(int width, int max_width);
 
-  int coarsest() const { return top_ ? int(levels_.size()) + 1 : 0; }
-  const Image& level(int k) const {
-    return k == 0 ? base_ : k == coarsest() ? top_->image() : levels_[size_t(k) - 1];
-  }
+  int coarsest() const { return int(images_.size()) - 1; }
+  const Image& level(int k) const { return *images_[size_t(k)]; }
   // The coarsest level as a map of its own, its image the level's (no copy); null for level 0 alone.
   std::shared_ptr<const EnvMap> coarsest_map() const { return top_; }
   // Bilinear in level k (u wraps around, v is clamped at the poles).
@@ -41,6 +41,7 @@ class EnvMapLevels {
   const Image& base_;
   std::vector<Image> levels_;          // 1 .. coarsest - 1
   std::shared_ptr<const EnvMap> top_;  // the coarsest
+  std::vector<const Image*> images_;   // 0 .. coarsest: base_, levels_, top_'s image
 };
 
 }  // namespace lp
