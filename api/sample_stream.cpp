@@ -22,7 +22,9 @@ size_t bytes_per_sample(SampleEncoding encoding) {
 
 SampleStream::SampleStream(std::shared_ptr<const EnvMapSampler> sampler, SampleRequest request,
                            SampleEncoding encoding)
-    : sampler_(std::move(sampler)), request_(std::move(request)), encoding_(encoding) {}
+    : sampler_(std::move(sampler)), request_(std::move(request)), encoding_(encoding) {
+  if (request_.spec.strategy == SampleStrategy::Independent) alias_ = sampler_->alias_table();
+}
 
 bool SampleStream::next(std::string& out) {
   const uint64_t total = request_.spec.count;
@@ -31,7 +33,7 @@ bool SampleStream::next(std::string& out) {
   if (next_ == 0 && encoding_ == SampleEncoding::Csv) out += std::string(kSampleRecordLayout) + "\n";
   const uint64_t n = std::min(kChunk, total - next_);
   buffer_.resize(n);
-  generate_samples(*sampler_, request_.spec, next_, buffer_);
+  generate_samples(*sampler_, request_.spec, next_, buffer_, alias_.get());
   out.reserve(out.size() + n * bytes_per_sample(encoding_));
   for (uint64_t k = 0; k < n; ++k) {
     switch (encoding_) {

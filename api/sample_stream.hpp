@@ -26,6 +26,7 @@ class SampleStream {
 
  private:
   std::shared_ptr<const EnvMapSampler> sampler_;
+  std::shared_ptr<const AliasTable2D> alias_;  // independent sets: held (and reserved) from the start
   SampleRequest request_;
   SampleEncoding encoding_;
   std::vector<EnvSample> buffer_;

@@ -142,10 +142,10 @@ BENCHMARK(BM_BatchInverseCdf)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecon
 
 void BM_BatchAlias(benchmark::State& state) {
   const auto sampler = forest(int(state.range(0))).sampler(LuminanceMode::Average);
-  sampler->sample_alias(0, 0, 0, 0);  // build the table outside the timing
+  const auto table = sampler->alias_table();  // built outside the timing
   run_batch(state, [&](Rng& rng) {
     const uint64_t a = rng.next_u64(), b = rng.next_u64();
-    return sampler->sample_alias(a, b, rng.uniform_float(), rng.uniform_float());
+    return sampler->sample_alias(*table, a, b, rng.uniform_float(), rng.uniform_float());
   });
 }
 BENCHMARK(BM_BatchAlias)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -153,6 +153,7 @@ BENCHMARK(BM_BatchAlias)->Arg(1024)->Arg(4096)->Unit(benchmark::kMillisecond)->U
 // The alias table in prefetched blocks, one thread (what generate_samples does per task).
 void BM_BatchAliasPrefetched(benchmark::State& state) {
   const auto sampler = forest(int(state.range(0))).sampler(LuminanceMode::Average);
+  const auto table = sampler->alias_table();
   std::vector<EnvMapSampler::AliasBits> bits(kBatch);
   std::vector<EnvSample> out(kBatch);
   for (auto _ : state) {
@@ -160,7 +161,7 @@ void BM_BatchAliasPrefetched(benchmark::State& state) {
       Rng rng(1, uint64_t(i));
       bits[size_t(i)] = {rng.next_u64(), rng.next_u64(), rng.uniform_float(), rng.uniform_float()};
     }
-    sampler->sample_alias(bits, out);
+    sampler->sample_alias(*table, bits, out);
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * kBatch);

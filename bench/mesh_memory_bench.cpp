@@ -10,24 +10,13 @@
 #include "bench_data.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/mesh_loader.hpp"
+#include "process_memory.hpp"
 #include "support/test_data.hpp"
 
 namespace {
 
-// A field of /proc/self/status in bytes ("VmRSS", "VmHWM").
-int64_t status_bytes(const std::string& field) {
-  std::ifstream status("/proc/self/status");
-  for (std::string key; status >> key;) {
-    int64_t kib = 0;
-    if (key == field + ":" && status >> kib) return kib * 1024;
-    status.ignore(1 << 20, '\n');
-  }
-  return 0;
-}
-
-void reset_peak() {
-  std::ofstream("/proc/self/clear_refs") << "5";
-}
+using lp::bench::reset_peak;
+using lp::bench::status_bytes;
 
 std::filesystem::path grid_file(int n) {
   const auto path =

@@ -16,17 +16,14 @@ namespace {
 // it back, since light sampling depends on the power being the map's.
 constexpr int kChannels = 4;
 
-MipLevel weighted(const Image& image) {
-  MipLevel out{image.width(), image.height(), {}};
-  out.texels.resize(size_t(image.width()) * image.height() * kChannels);
-  tbb::parallel_for(0, image.height(), [&](int y) {
-    const float w = float(latlong::pixel_solid_angle(y, 1, image.height()) * image.height() / (2.0 * kPi));
-    for (int x = 0; x < image.width(); ++x) {
-      const Rgb c = image.at(x, y);
-      float* t = &out.texels[(size_t(y) * image.width() + x) * kChannels];
-      t[0] = c.x * w, t[1] = c.y * w, t[2] = c.z * w, t[3] = w;
-    }
-  });
+// Row y of the image as (L w, w) texels.
+const float* weighted_row(const Image& image, int y, float* out) {
+  const float w = float(latlong::pixel_solid_angle(y, 1, image.height()) * image.height() / (2.0 * kPi));
+  for (int x = 0; x < image.width(); ++x) {
+    const Rgb c = image.at(x, y);
+    float* t = &out[size_t(x) * kChannels];
+    t[0] = c.x * w, t[1] = c.y * w, t[2] = c.z * w, t[3] = w;
+  }
   return out;
 }
 
@@ -49,13 +46,23 @@ Image unweighted(const MipLevel& level, const Rgb& power) {
 
 }  // namespace
 
+// Level 1 is filtered from the image weighted a row at a time: a weighted copy of the whole map would
+// take 16 bytes a pixel while the levels are made.
 EnvMapLevels::EnvMapLevels(const EnvMap& map, int coarsest) : base_(map.image()) {
-  if (coarsest < 1) return;  // the map alone: no weighted copy to make
-  MipLevel current = weighted(map.image());
-  for (int k = 1; k <= coarsest && (current.width > 1 || current.height > 1); ++k) {
+  const Image& image = map.image();
+  images_.push_back(&base_);
+  if (coarsest < 1 || (image.width() == 1 && image.height() == 1)) return;
+  MipLevel current = downsample(image.width(), image.height(), kChannels,
+                                [&](int y, float* scratch) { return weighted_row(image, y, scratch); });
+  levels_.push_back(unweighted(current, map.power()));
+  for (int k = 2; k <= coarsest && (current.width > 1 || current.height > 1); ++k) {
     current = downsample(current, kChannels);
     levels_.push_back(unweighted(current, map.power()));
   }
+  top_ = std::make_shared<const EnvMap>(std::move(levels_.back()));
+  levels_.pop_back();
+  for (const Image& level : levels_) images_.push_back(&level);
+  images_.push_back(&top_->image());
 }
 
 int64_t EnvMapLevels::memory_bytes(int width, int height, int coarsest) {

@@ -5,6 +5,7 @@
 // (integral of radiance over the sphere) exactly: a coarse texel is the solid-angle mean of what it
 // covers, and the poles' thin rows count for what they are.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "engine/core/vec3.hpp"
@@ -18,13 +19,17 @@ class EnvMapLevels {
  public:
   // Levels 1..`coarsest` of `map` (level 0 is the map's own image, referred to, not copied).
   EnvMapLevels(const EnvMap& map, int coarsest);
+  EnvMapLevels(const EnvMapLevels&) = delete;  // it points into itself
+  EnvMapLevels& operator=(const EnvMapLevels&) = delete;
   // The bytes the levels above 0 take for a width x height map.
   static int64_t memory_bytes(int width, int height, int coarsest);
   // The finest level no wider than `max_width`.
   static int level_for_width(int width, int max_width);
 
-  int coarsest() const { return int(levels_.size()); }
-  const Image& level(int k) const { return k == 0 ? base_ : levels_[size_t(k) - 1]; }
+  int coarsest() const { return int(images_.size()) - 1; }
+  const Image& level(int k) const { return *images_[size_t(k)]; }
+  // The coarsest level as a map of its own, its image the level's (no copy); null for level 0 alone.
+  std::shared_ptr<const EnvMap> coarsest_map() const { return top_; }
   // Bilinear in level k (u wraps around, v is clamped at the poles).
   Rgb bilinear(int k, latlong::Uv uv) const;
   // Between the two levels around `level` (clamped to [0, coarsest]), bilinear in each.
@@ -34,7 +39,9 @@ class EnvMapLevels {
 
  private:
   const Image& base_;
-  std::vector<Image> levels_;
+  std::vector<Image> levels_;          // 1 .. coarsest - 1
+  std::shared_ptr<const EnvMap> top_;  // the coarsest
+  std::vector<const Image*> images_;   // 0 .. coarsest: base_, levels_, top_'s image
 };
 
 }  // namespace lp

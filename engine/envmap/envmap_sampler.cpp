@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cmath>
+#include <string>
 
 namespace lp {
 namespace {
@@ -52,29 +53,33 @@ EnvSample EnvMapSampler::sample(float u1, float u2) const {
   return finish(dist_.sample(u1, u2));
 }
 
-const AliasTable2D& EnvMapSampler::alias() const {
-  std::call_once(alias_once_, [&] { alias_ = std::make_unique<AliasTable2D>(dist_); });
-  return *alias_;
+std::shared_ptr<const AliasTable2D> EnvMapSampler::alias_table() const {
+  return map_.derived<AliasTable2D>(std::string("alias:") + enum_name(mode_),
+                                    AliasTable2D::memory_bytes(dist_.width(), dist_.height()),
+                                    [&] { return std::make_shared<const AliasTable2D>(dist_); });
 }
 
-EnvSample EnvMapSampler::sample_alias(uint64_t r_row, uint64_t r_col, float fu, float fv) const {
-  return finish(alias().sample(r_row, r_col, fu, fv));
+EnvSample EnvMapSampler::sample_alias(const AliasTable2D& table, uint64_t r_row, uint64_t r_col, float fu,
+                                      float fv) const {
+  return finish(table.sample(dist_, r_row, r_col, fu, fv));
 }
 
-void EnvMapSampler::sample_alias(std::span<const AliasBits> bits, std::span<EnvSample> out) const {
-  const AliasTable2D& table = alias();
+void EnvMapSampler::sample_alias(const AliasTable2D& table, std::span<const AliasBits> bits,
+                                 std::span<EnvSample> out) const {
   constexpr size_t kBlock = 32;
-  GridSample grid[kBlock];
+  AliasTable2D::Cell cells[kBlock];
   for (size_t start = 0; start < bits.size(); start += kBlock) {
     const size_t n = std::min(kBlock, bits.size() - start);
     for (size_t k = 0; k < n; ++k)
       __builtin_prefetch(table.column_entry_address(bits[start + k].r_row, bits[start + k].r_col));
     for (size_t k = 0; k < n; ++k) {
-      const AliasBits& b = bits[start + k];
-      grid[k] = table.sample(b.r_row, b.r_col, b.fu, b.fv);
-      __builtin_prefetch(map_.image().row(grid[k].y) + 3 * grid[k].x);
+      cells[k] = table.pick(bits[start + k].r_row, bits[start + k].r_col);
+      prefetch(cells[k].x, cells[k].y);
     }
-    for (size_t k = 0; k < n; ++k) out[start + k] = finish(grid[k]);
+    for (size_t k = 0; k < n; ++k) {
+      const AliasBits& b = bits[start + k];
+      out[start + k] = finish(table.at(dist_, cells[k], b.fu, b.fv));
+    }
   }
 }
 

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <span>
 
 #include "engine/core/constants.hpp"
@@ -26,22 +25,28 @@ struct EnvSample {
 class EnvMapSampler {
  public:
   EnvMapSampler(const EnvMap& map, LuminanceMode mode);
-  // The bytes a sampler of a width x height map holds once its alias table is built.
+  // The bytes a sampler of a width x height map holds: its inverse CDFs. The alias table is a cache
+  // entry of the map of its own (alias_table), made and reserved only where independent samples are drawn.
   static int64_t memory_bytes(int64_t width, int64_t height) {
-    return PiecewiseConstant2D::memory_bytes(width, height) + AliasTable2D::memory_bytes(width, height);
+    return PiecewiseConstant2D::memory_bytes(width, height);
   }
 
   // Inverse-CDF sample: u1 -> phi (column), u2 -> theta (row). Both in [0, 1).
   EnvSample sample(float u1, float u2) const;
-  // O(1) alias-table sample from independent random bits (for independent sample sets).
-  EnvSample sample_alias(uint64_t r_row, uint64_t r_col, float fu, float fv) const;
-  // The same for many samples at once: the table entries and pixels each one needs are prefetched
-  // a block ahead, so their cache misses overlap instead of following one another.
+  // The alias table of the distribution, built on first use and cached on the map with its bytes
+  // (evicted like other derived data; a holder keeps it alive).
+  std::shared_ptr<const AliasTable2D> alias_table() const;
+  // O(1) alias-table sample from independent random bits (for independent sample sets); `table` is
+  // alias_table().
+  EnvSample sample_alias(const AliasTable2D& table, uint64_t r_row, uint64_t r_col, float fu, float fv) const;
+  // The same for many samples at once: the table entries, pdfs and pixels each one needs are
+  // prefetched a block ahead, so their cache misses overlap instead of following one another.
   struct AliasBits {
     uint64_t r_row, r_col;
     float fu, fv;
   };
-  void sample_alias(std::span<const AliasBits> bits, std::span<EnvSample> out) const;
+  void sample_alias(const AliasTable2D& table, std::span<const AliasBits> bits,
+                    std::span<EnvSample> out) const;
 
   // Solid-angle pdf of a direction; agrees with sample().pdf.
   float pdf(Vec3 direction) const;
@@ -66,13 +71,10 @@ class EnvMapSampler {
     return density / (2.0f * kPiF * kPiF * std::max(sin_theta, 1e-7f));
   }
   EnvSample finish(const GridSample& g) const;
-  const AliasTable2D& alias() const;
 
   const EnvMap& map_;
   LuminanceMode mode_;
   PiecewiseConstant2D dist_;
-  mutable std::once_flag alias_once_;
-  mutable std::unique_ptr<AliasTable2D> alias_;
 };
 
 }  // namespace lp

@@ -58,8 +58,8 @@ EnvSample one_sample(const EnvMapSampler& sampler, const SampleSetSpec& spec, ui
 }
 
 // Independent samples go through the alias table in blocks, with the bits drawn first.
-void generate_independent(const EnvMapSampler& sampler, uint64_t seed, uint64_t first,
-                          std::span<EnvSample> out) {
+void generate_independent(const EnvMapSampler& sampler, const AliasTable2D& alias, uint64_t seed,
+                          uint64_t first, std::span<EnvSample> out) {
   std::vector<EnvMapSampler::AliasBits> bits(out.size());
   for (size_t k = 0; k < out.size(); ++k) {
     Rng rng(seed, first + k);
@@ -68,20 +68,26 @@ void generate_independent(const EnvMapSampler& sampler, uint64_t seed, uint64_t 
     bits[k].fu = rng.uniform_float();
     bits[k].fv = rng.uniform_float();
   }
-  sampler.sample_alias(bits, out);
+  sampler.sample_alias(alias, bits, out);
 }
 
 }  // namespace
 
 void generate_samples(const EnvMapSampler& sampler, const SampleSetSpec& spec, uint64_t first,
-                      std::span<EnvSample> out) {
+                      std::span<EnvSample> out, const AliasTable2D* alias) {
   if (spec.strategy == SampleStrategy::Sobol && spec.count > (uint64_t{1} << 32))
     throw Error(ErrorKind::InvalidArgument, "sobol sets hold at most 2^32 samples");
   if (spec.strategy == SampleStrategy::Independent) {
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, out.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-          generate_independent(sampler, spec.seed, first + r.begin(), out.subspan(r.begin(), r.size()));
-        });
+    std::shared_ptr<const AliasTable2D> held;
+    if (!alias) {
+      held = sampler.alias_table();
+      alias = held.get();
+    }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        generate_independent(sampler, *alias, spec.seed, first + r.begin(),
+                                             out.subspan(r.begin(), r.size()));
+                      });
     return;
   }
   tbb::parallel_for(tbb::blocked_range<size_t>(0, out.size(), 4096),

@@ -31,9 +31,11 @@ struct SampleSetSpec {
   uint64_t seed = 0;
 };
 
-// Fills out[k] with sample (first + k) of the set.
+// Fills out[k] with sample (first + k) of the set. Independent sets go through `alias`, the
+// sampler's alias_table(), which a caller drawing a set in pieces holds for all of them (looked up in
+// the map's cache, and built if needed, when null).
 void generate_samples(const EnvMapSampler& sampler, const SampleSetSpec& spec, uint64_t first,
-                      std::span<EnvSample> out);
+                      std::span<EnvSample> out, const AliasTable2D* alias = nullptr);
 
 // The point in [0, 1)^2 that sample `index` feeds the inverse-CDF sampler (stratified and sobol).
 Point2 stratified_point(uint64_t count, uint64_t seed, uint64_t index);

@@ -53,8 +53,9 @@ int64_t PrefilterSource::memory_bytes(int map_width, int map_height, int width) 
     w = width, h = std::max(1, width / 2);
     bytes += resample_latlong_bytes(map_height, w, h);
   }
-  // The levels, and while they are made two weighted RGBA copies (envmap_levels.cpp): 16 + 4 bytes a texel.
-  return bytes + EnvMapLevels::memory_bytes(w, h, coarsest_level(w, h)) + 20 * int64_t(w) * h;
+  // The levels, and while they are made two weighted RGBA levels (envmap_levels.cpp): levels 1 and 2,
+  // 16 / 4 + 16 / 16 bytes a texel of the source, and a few rows.
+  return bytes + EnvMapLevels::memory_bytes(w, h, coarsest_level(w, h)) + 5 * int64_t(w) * h;
 }
 
 float PrefilterSource::lod(float sample_solid_angle) const {

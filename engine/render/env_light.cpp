@@ -24,7 +24,7 @@ std::shared_ptr<const CoarseGrid> coarse_grid(const EnvMap& map, int max_width) 
   return map.derived<CoarseGrid>("importance-grid/" + std::to_string(max_width), bytes, [&] {
     auto g = std::make_shared<CoarseGrid>();
     g->levels = std::make_shared<EnvMapLevels>(map, level);
-    g->grid = std::make_shared<EnvMap>(g->levels->level(level));
+    g->grid = g->levels->coarsest_map();
     g->sampler = g->grid->sampler(kImportanceLuminance);
     return g;
   });
@@ -58,8 +58,7 @@ int64_t EnvLight::grid_memory_bytes(int width, int height, int max_width) {
   const int level = EnvMapLevels::level_for_width(width, max_width);
   if (level == 0) return 0;
   const int gw = std::max(1, width >> level), gh = std::max(1, height >> level);
-  return EnvMapLevels::memory_bytes(width, height, level) + EnvMap::image_bytes(gw, gh) +
-         EnvMapSampler::memory_bytes(gw, gh);
+  return EnvMapLevels::memory_bytes(width, height, level) + EnvMapSampler::memory_bytes(gw, gh);
 }
 
 Rgb EnvLight::radiance(Vec3 world_direction) const {

@@ -37,35 +37,39 @@ AliasTable2D::AliasTable2D(const PiecewiseConstant2D& dist) : width_(dist.width(
   columns_.resize(size_t(height_) * size_t(width_));
   tbb::parallel_for(0, height_, [&](int y) {
     std::vector<double> w(static_cast<size_t>(width_));
-    std::vector<Entry> entries(static_cast<size_t>(width_));
     for (int x = 0; x < width_; ++x) w[size_t(x)] = dist.density(x, y);
-    build(w.data(), width_, entries.data());
-    ColumnEntry* out = &columns_[size_t(y) * width_];
-    for (int x = 0; x < width_; ++x) {
-      const Entry e = entries[size_t(x)];
-      out[x] = {e, dist.density(x, y), dist.density(int(e.alias), y)};
-    }
+    build(w.data(), width_, &columns_[size_t(y) * width_]);
   });
 }
 
 // The high 32 bits pick the slot (multiply-shift), the low 24 bits are the coin for the threshold.
-bool AliasTable2D::keep(const Entry& e, uint64_t r) { return float(r & 0xffffff) * 0x1p-24f < e.threshold; }
-
-const void* AliasTable2D::column_entry_address(uint64_t r_row, uint64_t r_col) const {
-  const uint32_t row_slot = slot(height_, r_row);
-  const uint32_t y = keep(rows_[row_slot], r_row) ? row_slot : rows_[row_slot].alias;
-  return &columns_[size_t(y) * width_ + slot(width_, r_col)];
+bool AliasTable2D::keep(const Entry& e, uint64_t r) {
+  return float(r & 0xffffff) * 0x1p-24f < e.threshold;
 }
 
-GridSample AliasTable2D::sample(uint64_t r_row, uint64_t r_col, float fu, float fv) const {
-  GridSample s;
+uint32_t AliasTable2D::row(uint64_t r_row) const {
   const uint32_t row_slot = slot(height_, r_row);
-  s.y = int(keep(rows_[row_slot], r_row) ? row_slot : rows_[row_slot].alias);
+  return keep(rows_[row_slot], r_row) ? row_slot : rows_[row_slot].alias;
+}
+
+const void* AliasTable2D::column_entry_address(uint64_t r_row, uint64_t r_col) const {
+  return &columns_[size_t(row(r_row)) * width_ + slot(width_, r_col)];
+}
+
+AliasTable2D::Cell AliasTable2D::pick(uint64_t r_row, uint64_t r_col) const {
+  Cell c;
+  c.y = int(row(r_row));
   const uint32_t col_slot = slot(width_, r_col);
-  const ColumnEntry& c = columns_[size_t(s.y) * width_ + col_slot];
-  const bool self = keep(c.entry, r_col);
-  s.x = int(self ? col_slot : c.entry.alias);
-  s.density = self ? c.density_self : c.density_alias;
+  const Entry& e = columns_[size_t(c.y) * width_ + col_slot];
+  c.x = int(keep(e, r_col) ? col_slot : e.alias);
+  return c;
+}
+
+GridSample AliasTable2D::at(const PiecewiseConstant2D& dist, Cell c, float fu, float fv) const {
+  GridSample s;
+  s.x = c.x;
+  s.y = c.y;
+  s.density = dist.density(c.x, c.y);
   s.u = (s.x + double(fu)) / width_;
   s.v = (s.y + double(fv)) / height_;
   return s;

@@ -1,5 +1,6 @@
 #include "engine/texture/mip_pyramid.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -31,35 +32,51 @@ double weight(const Footprint& f, int k) {
   return k == f.first ? f.first_weight : (k == f.last ? f.last_weight : 1.0);
 }
 
-// Filters along x (for each row) or along y (for each column) from `in` into `out`.
-void filter_axis(const MipLevel& in, MipLevel& out, int channels, bool along_x) {
-  const int n_in = along_x ? in.width : in.height, n_out = along_x ? out.width : out.height;
-  tbb::parallel_for(0, out.height, [&](int y) {
-    double sum[4];
-    for (int x = 0; x < out.width; ++x) {
-      const Footprint f = footprint(along_x ? x : y, n_in, n_out);
-      std::fill(sum, sum + channels, 0.0);
-      for (int k = f.first; k <= f.last; ++k) {
-        const float* t = &in.texels[(size_t(along_x ? y : k) * in.width + (along_x ? k : x)) * channels];
-        const double w = weight(f, k);
-        for (int c = 0; c < channels; ++c) sum[c] += w * t[c];
-      }
-      float* o = &out.texels[(size_t(y) * out.width + x) * channels];
-      for (int c = 0; c < channels; ++c) o[c] = float(sum[c] * f.scale);
+// Filters one row of n_in texels into n_out.
+void filter_row(const float* in, int n_in, float* out, int n_out, int channels) {
+  double sum[4];
+  for (int x = 0; x < n_out; ++x) {
+    const Footprint f = footprint(x, n_in, n_out);
+    std::fill(sum, sum + channels, 0.0);
+    for (int k = f.first; k <= f.last; ++k) {
+      const float* t = &in[size_t(k) * channels];
+      const double w = weight(f, k);
+      for (int c = 0; c < channels; ++c) sum[c] += w * t[c];
     }
-  });
+    for (int c = 0; c < channels; ++c) out[size_t(x) * channels + c] = float(sum[c] * f.scale);
+  }
 }
 
 }  // namespace
 
-MipLevel downsample(const MipLevel& level, int channels) {
-  MipLevel rows{std::max(1, level.width / 2), level.height, {}};
-  rows.texels.resize(size_t(rows.width) * rows.height * channels);
-  filter_axis(level, rows, channels, true);
-  MipLevel out{rows.width, std::max(1, level.height / 2), {}};
+// Each output row filters the input rows it covers along x, then sums them along y: the same
+// arithmetic, in the same order, as a pass along x over the whole level and then one along y, without
+// the half-size intermediate (rows shared by two output rows, at odd heights, are filtered twice).
+MipLevel downsample(int width, int height, int channels, const MipRowSource& row) {
+  MipLevel out{std::max(1, width / 2), std::max(1, height / 2), {}};
   out.texels.resize(size_t(out.width) * out.height * channels);
-  filter_axis(rows, out, channels, false);
+  const size_t out_row = size_t(out.width) * channels;
+  tbb::parallel_for(tbb::blocked_range<int>(0, out.height), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<float> scratch(size_t(width) * channels), filtered(out_row);
+    std::vector<double> sum(out_row);
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      std::fill(sum.begin(), sum.end(), 0.0);
+      const Footprint f = footprint(y, height, out.height);
+      for (int k = f.first; k <= f.last; ++k) {
+        filter_row(row(k, scratch.data()), width, filtered.data(), out.width, channels);
+        const double w = weight(f, k);
+        for (size_t i = 0; i < out_row; ++i) sum[i] += w * filtered[i];
+      }
+      float* o = &out.texels[size_t(y) * out_row];
+      for (size_t i = 0; i < out_row; ++i) o[i] = float(sum[i] * f.scale);
+    }
+  });
   return out;
+}
+
+MipLevel downsample(const MipLevel& level, int channels) {
+  return downsample(level.width, level.height, channels,
+                    [&](int y, float*) { return &level.texels[size_t(y) * level.width * channels]; });
 }
 
 std::vector<MipLevel> build_mip_pyramid(MipLevel base, int channels) {

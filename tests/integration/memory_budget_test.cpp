@@ -95,12 +95,11 @@ TEST(MemoryBudgetApi, MapsFillTheBudgetCachesGoFirstThenLoadsAre507AndADeleteMak
       break;
     }
     loaded.push_back(name);
-    // A map is loaded with its sampling table...
+    // A map is loaded with its sampling table: 9 bytes per pixel (the inverse CDFs with their guide
+    // tables) and a few per row; the alias table is made when independent samples are first drawn.
     const auto bytes = r.body_json()["memory_bytes"].get<int64_t>();
-    // 25 bytes per pixel (9 for the inverse CDFs with their guide tables, 16 for the alias table) and a
-    // few per row
-    EXPECT_GE(bytes, image_bytes + 512 * 256 * 25) << name;
-    EXPECT_LT(bytes, image_bytes + 512 * 256 * 26) << name;
+    EXPECT_GE(bytes, image_bytes + 512 * 256 * 9) << name;
+    EXPECT_LT(bytes, image_bytes + 512 * 256 * 10) << name;
   }
   ASSERT_GE(loaded.size(), 3u);
   expect_refusal(refused, 507, "insufficient_memory");
@@ -126,6 +125,10 @@ TEST(MemoryBudgetApi, MapsFillTheBudgetCachesGoFirstThenLoadsAre507AndADeleteMak
     });
     EXPECT_EQ(r.status, 200) << name << ": " << r.body.substr(0, 300);
   }
+  // Independent samples were drawn through the alias table: 8 bytes more per pixel.
+  const auto sampled = get(s, "/api/v1/envmaps/" + loaded.back()).body_json()["memory_bytes"].get<int64_t>();
+  EXPECT_GE(sampled, image_bytes + 512 * 256 * 17);
+  EXPECT_LT(sampled, image_bytes + 512 * 256 * 18);
   EXPECT_TRUE(s.alive());
 }
 

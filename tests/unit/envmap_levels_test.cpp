@@ -56,6 +56,9 @@ TEST(EnvMapLevels, MemoryIsWhatTheLevelsHold) {
   EXPECT_EQ(EnvMapLevels::memory_bytes(100, 50, 3), bytes);
   EXPECT_EQ(levels.level(3).width(), 12);
   EXPECT_EQ(levels.level(3).height(), 6);
+  // The coarsest level is a map of its own (the renderer's importance grid) holding the level's pixels.
+  EXPECT_EQ(&levels.coarsest_map()->image(), &levels.level(3));
+  EXPECT_EQ(EnvMapLevels(map, 0).coarsest_map(), nullptr);
 }
 
 TEST(EnvMapLevels, TheGridWidthPicksTheFirstLevelThatFits) {

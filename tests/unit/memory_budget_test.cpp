@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "engine/envmap/envmap.hpp"
+#include "engine/envmap/envmap_sampler.hpp"
+#include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut.hpp"
 
 namespace lp {
@@ -202,6 +204,22 @@ TEST(EnvMapMemory, MedianCutResultsAreCachedInTheBudgetAndEvictedFirst) {
   other.release();
   median_cut_cached(*map, params, &hit);
   EXPECT_FALSE(hit);
+}
+
+TEST(EnvMapMemory, TheSamplerHoldsItsCdfsAndTheAliasTableIsReservedWhenIndependentSamplesAreDrawn) {
+  const MemoryBudget budget(int64_t{8} << 20);
+  auto map = std::make_shared<EnvMap>(flat_image(64, 32));
+  map->account_memory(budget, budget.reserve(EnvMap::image_bytes(64, 32), MemoryUse::Held, "map"));
+  const auto sampler = map->sampler(LuminanceMode::Average);
+  EXPECT_EQ(budget.used(MemoryUse::Cache), EnvMapSampler::memory_bytes(64, 32));
+  std::vector<EnvSample> out(16);
+  generate_samples(*sampler, {SampleStrategy::Sobol, 16, 1}, 0, out);
+  EXPECT_EQ(budget.used(MemoryUse::Cache), EnvMapSampler::memory_bytes(64, 32));
+  generate_samples(*sampler, {SampleStrategy::Independent, 16, 1}, 0, out);
+  EXPECT_EQ(map->memory_bytes(), EnvMap::image_bytes(64, 32) + EnvMapSampler::memory_bytes(64, 32) +
+                                     AliasTable2D::memory_bytes(64, 32));
+  // 8 bytes a cell (a threshold and an alias): the densities are the distribution's.
+  EXPECT_EQ(AliasTable2D::memory_bytes(64, 32), 8 * (64 * 32 + 32));
 }
 
 }  // namespace
