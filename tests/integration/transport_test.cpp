@@ -236,14 +236,25 @@ TEST(Transport, AControlByteInThePathGets400) {
   EXPECT_NE(page.head.find("Content-Type: text/html"), std::string::npos) << page.head;
 }
 
+// A connection that got one answer. A connection closed just before (the harness's readiness checks)
+// counts against the limits until the server has seen it close, so a refusal is retried meanwhile.
+std::unique_ptr<RawConnection> served_connection(int port) {
+  for (int attempt = 0;; ++attempt) {
+    auto c = std::make_unique<RawConnection>(port);
+    c->send(test::get_request(port, "/api/v1/health"));
+    const int status = c->read_response().status;
+    if (status == 200 || attempt == 200) {
+      EXPECT_EQ(status, 200);
+      return c;
+    }
+    std::this_thread::sleep_for(10ms);
+  }
+}
+
 // Opens connections that each got one answer, then one more: refused with 503 and closed.
 void expect_refused_after(int port, int open, const std::string& limit_flag) {
   std::vector<std::unique_ptr<RawConnection>> held;
-  for (int i = 0; i < open; ++i) {
-    held.push_back(std::make_unique<RawConnection>(port));
-    held.back()->send(test::get_request(port, "/api/v1/health"));
-    ASSERT_EQ(held.back()->read_response().status, 200) << i;
-  }
+  for (int i = 0; i < open; ++i) held.push_back(served_connection(port));
   RawConnection extra(port);
   extra.send(test::get_request(port, "/api/v1/health"));
   const RawResponse refused = extra.read_response();
