@@ -31,9 +31,9 @@ inline Uv uv(Vec3 d) {
   const float theta = fast_atan2(std::sqrt(d.x * d.x + d.y * d.y), d.z);
   float phi = fast_atan2(d.y, d.x);
   if (phi < 0) phi += 2.0f * kPiF;
-  float u = phi / (2.0f * kPiF);
+  float u = phi * (0.5f / kPiF);
   if (u >= 1.0f) u = 0.0f;
-  return {u, theta / kPiF};
+  return {u, std::min(theta * (1.0f / kPiF), 1.0f)};
 }
 
 // The pixel containing (u, v), clamped to the grid.
