@@ -1,5 +1,6 @@
 #include "bench_data.hpp"
 
+#include "engine/fresnel/metals.hpp"
 #include "engine/image/image_io.hpp"
 #include "support/test_data.hpp"
 
@@ -31,6 +32,24 @@ const Image& forest(int width) {
   if (width == small.width()) return small;
   static const Image large = resize_box(small, 8192, 4096);
   return large;
+}
+
+}  // namespace lp::bench
+
+namespace lp::bench {
+
+render::SceneDesc diffuse_and_glossy() {
+  using namespace render;
+  const ConductorPreset& gold = lookup_metal("gold");
+  SceneDesc s;
+  s.camera = {{0, -6.5f, 2.2f}, {0, 0, -0.2f}, {0, 0, 1}, 35};
+  s.objects = {
+      {SphereObject{{-1.2f, 0, 0}, 0.5f}, DiffuseMaterial{{0.8f, 0.8f, 0.8f}}},
+      {SphereObject{{0, 0, 0}, 0.5f}, PlasticMaterial{{0.7f, 0.1f, 0.08f}, 1.5f, 0.15f}},
+      {SphereObject{{1.2f, 0, 0}, 0.5f}, ConductorMaterial{gold.eta_rgb(), gold.k_rgb(), 0.3f}},
+      {PlaneObject{{0, 0, -0.5f}, {0, 0, 1}}, DiffuseMaterial{{0.5f, 0.5f, 0.5f}}},
+  };
+  return s;
 }
 
 }  // namespace lp::bench

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/image/image.hpp"
+#include "engine/render/scene_desc.hpp"
 
 namespace lp::bench {
 
@@ -14,5 +15,9 @@ std::filesystem::path mesh_path(const std::string& file);
 // forest.exr at its own width, or enlarged (box filter) to 8192 x 4096 for any other `width`; each
 // read or built once.
 const Image& forest(int width);
+
+// A diffuse sphere, a glossy plastic one (roughness 0.15) and rough gold (0.3) on a diffuse plane: glossy
+// surfaces with no mirror or glass, whose caustics a path tracer finds only by chance.
+render::SceneDesc diffuse_and_glossy();
 
 }  // namespace lp::bench

@@ -1,11 +1,21 @@
 // Time to reach a given error, for comparing with other renderers (bench/cycles_compare.py runs the
-// same scene in Blender Cycles): renders a converged reference, then 1, 2, 4, ... spp, and prints for
-// each the render time and the RMSE against the reference (relative to the reference's mean), over the
-// pixels the reference covers (the map is not visible to the camera, as a transparent film in Cycles).
-// Usage: render_error_bench [preset=sphere] [mode=envmap] [size=64] [ref_spp=4096] [max_spp=256]
-//                           [threads=2] [out_dir]   (out_dir: writes reference.exr and spp_<n>.exr)
-// Arguments starting with "--" (Google Benchmark flags from bench/run_all.sh) are ignored. The Cycles
-// comparison in the README used: render_error_bench sphere envmap 128 4096 1024 2
+// same scene in Blender Cycles) and with earlier builds of this one (bench/speedup_compare.sh): renders a
+// converged reference, then 1, 2, 4, ... spp, and prints for each the render time and the RMSE against
+// the reference (relative to the reference's mean), over the pixels the reference covers (the map is not
+// visible to the camera, as a transparent film in Cycles). Then the time each error level takes.
+// Usage: render_error_bench [scene=sphere] [mode=envmap] [size=64] [ref_spp=4096] [max_spp=256]
+//                           [threads=2] [out_dir] [--map=FILE] [--seeds=K]
+//                           [--mis-compensation=0|1]
+//   scene: a preset, or `glossy` (bench_data.hpp: diffuse_and_glossy, no mirror or glass);
+//   out_dir: writes reference.exr and spp_<n>.exr;  --map: the map (default forest.exr);
+//   --seeds: K independent renders at each spp, whose squared errors are averaged (default 1);
+//   --mis-compensation=0: light samples from the map's plain distribution (envmap.hpp, SamplerWeights).
+// The reference's own noise is taken out of each error: for independent unbiased renders of n and N
+// spp, E|I_n - R_N|^2 = (s^2/n)(1 + n/N), so the error of I_n against the expectation is the measured
+// one over sqrt(1 + n/N). Time is the render's wall time and the process's CPU time (all threads, scene
+// build included); the CPU time is steadier on a shared machine.
+// Other arguments starting with "--" (Google Benchmark flags from bench/run_all.sh) are ignored. The
+// Cycles comparison in the README used: render_error_bench sphere envmap 128 4096 1024 2
 #include <tbb/task_arena.h>
 
 #include <atomic>
@@ -13,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -30,10 +41,11 @@ const std::map<std::string, LightingMode> kModes = {{"envmap", LightingMode::Env
                                                     {"bsdf", LightingMode::Bsdf},
                                                     {"median_cut", LightingMode::MedianCut},
                                                     {"median_cut_all", LightingMode::MedianCutAll}};
+const double kErrorLevels[] = {0.02, 0.01, 0.005};
 
 struct Timed {
   Image image;
-  double seconds;
+  double seconds, cpu_seconds;
   RenderStats stats;
 };
 
@@ -43,14 +55,15 @@ Timed render(const SceneDesc& scene, const Lighting& lighting, int size, int spp
   settings.width = settings.height = size;
   settings.seed = seed;
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   Renderer renderer(scene, lighting, settings, map);  // scene build included, as in Cycles' timing
   std::atomic<bool> cancel{false};
   arena.execute([&] { renderer.render_pass(spp, cancel, {}); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return {renderer.image(), seconds, renderer.stats()};
+  return {renderer.image(), seconds, double(std::clock() - c0) / CLOCKS_PER_SEC, renderer.stats()};
 }
 
-double relative_rmse(const Image& a, const Image& ref) {
+double relative_mse(const Image& a, const Image& ref) {
   double sq = 0, sum = 0;
   int64_t n = 0;
   for (int y = 0; y < ref.height(); ++y)
@@ -64,15 +77,63 @@ double relative_rmse(const Image& a, const Image& ref) {
         ++n;
       }
     }
-  return std::sqrt(sq / double(n)) / (sum / double(n));
+  const double mean = sum / double(n);
+  return sq / double(n) / (mean * mean);
+}
+
+struct Point {
+  int spp;
+  double seconds, cpu_seconds, rmse;
+};
+
+// The time at which the error reaches `level`: log(time) linear in log(error) between the two measured
+// points around it; past the last point, the last one's time scaled by (error / level)^2.
+std::pair<double, bool> time_to(const std::vector<Point>& curve, double level, double Point::*time) {
+  for (size_t i = 1; i < curve.size(); ++i) {
+    const Point &a = curve[i - 1], &b = curve[i];
+    if (a.rmse >= level && level >= b.rmse && a.rmse > b.rmse) {
+      const double t = std::log(a.rmse / level) / std::log(a.rmse / b.rmse);
+      return {a.*time * std::pow(b.*time / (a.*time), t), false};
+    }
+  }
+  const Point& last = curve.back();
+  return {last.*time * (last.rmse / level) * (last.rmse / level), last.rmse > level};
+}
+
+// Builds of the engine from before the option render with the plain distribution and ignore it, so
+// bench/speedup_compare.sh can build this file against them.
+template <class L>
+void set_mis_compensation(L& lighting, bool on) {
+  if constexpr (requires { lighting.mis_compensation; }) lighting.mis_compensation = on;
+}
+
+struct Options {
+  std::vector<std::string> args;
+  std::filesystem::path map = bench::envmap_path("forest.exr");
+  int seeds = 1;
+  bool mis_compensation = true;
+};
+
+Options parse_options(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--map=", 0) == 0)
+      o.map = a.substr(6);
+    else if (a.rfind("--seeds=", 0) == 0)
+      o.seeds = std::max(1, std::atoi(a.c_str() + 8));
+    else if (a.rfind("--mis-compensation=", 0) == 0)
+      o.mis_compensation = a.back() != '0';
+    else if (a.rfind("--", 0) != 0)
+      o.args.push_back(a);
+  }
+  return o;
 }
 
 int run(int argc, char** argv) {
-  std::vector<std::string> args;
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]).rfind("--", 0) != 0) args.emplace_back(argv[i]);
+  const Options o = parse_options(argc, argv);
   const auto arg = [&](size_t i, const char* fallback) {
-    return i < args.size() ? args[i] : std::string(fallback);
+    return i < o.args.size() ? o.args[i] : std::string(fallback);
   };
   const std::string preset = arg(0, "sphere");
   const std::string mode = arg(1, "envmap");
@@ -81,7 +142,7 @@ int run(int argc, char** argv) {
   const int max_spp = std::atoi(arg(4, "256").c_str());
   const int threads = std::atoi(arg(5, "2").c_str());
   const std::filesystem::path out_dir = arg(6, "");
-  const auto scene = scene_preset(preset);
+  const auto scene = preset == "glossy" ? bench::diffuse_and_glossy() : scene_preset(preset);
   if (!scene || !kModes.count(mode)) {
     std::fprintf(stderr, "unknown preset or mode\n");
     return 2;
@@ -90,19 +151,40 @@ int run(int argc, char** argv) {
   lighting.mode = kModes.at(mode);
   lighting.lights = 64;
   lighting.visible = false;
-  const auto map = std::make_shared<const EnvMap>(read_image_file(bench::envmap_path("forest.exr")).image);
+  set_mis_compensation(lighting, o.mis_compensation);
+  const auto map = std::make_shared<const EnvMap>(read_image_file(o.map).image);
   tbb::task_arena arena(threads);
 
   const Timed ref = render(*scene, lighting, size, ref_spp, 1000, arena, map);
-  std::printf("# lightprobe %s %s %dx%d, %d threads; reference %d spp in %.2f s\n", preset.c_str(),
-              mode.c_str(), size, size, threads, ref_spp, ref.seconds);
+  std::printf("# lightprobe %s %s %dx%d on %s, %d threads, %d seeds; reference %d spp in %.2f s\n",
+              preset.c_str(), mode.c_str(), size, size, o.map.filename().c_str(), threads, o.seeds, ref_spp,
+              ref.seconds);
   if (!out_dir.empty()) write_file(out_dir / "reference.exr", write_exr(ref.image));
-  std::printf("spp,seconds,relative_rmse,samples_per_s,rays_per_s\n");
+  std::printf("spp,seconds,cpu_seconds,relative_rmse,samples_per_s,rays_per_s\n");
+  std::vector<Point> curve;
   for (int spp = 1; spp <= max_spp; spp *= 2) {
-    const Timed t = render(*scene, lighting, size, spp, 1, arena, map);
-    std::printf("%d,%.4f,%.5f,%.0f,%.0f\n", spp, t.seconds, relative_rmse(t.image, ref.image),
-                double(t.stats.samples) / t.seconds, double(t.stats.rays) / t.seconds);
-    if (!out_dir.empty()) write_file(out_dir / ("spp_" + std::to_string(spp) + ".exr"), write_exr(t.image));
+    Point p{spp, 0, 0, 0};
+    RenderStats stats;
+    for (int k = 0; k < o.seeds; ++k) {
+      const Timed t = render(*scene, lighting, size, spp, 1 + uint64_t(k), arena, map);
+      p.seconds += t.seconds / o.seeds;
+      p.cpu_seconds += t.cpu_seconds / o.seeds;
+      p.rmse += relative_mse(t.image, ref.image) / o.seeds;
+      stats.samples += t.stats.samples;
+      stats.rays += t.stats.rays;
+      if (!out_dir.empty() && k == 0)
+        write_file(out_dir / ("spp_" + std::to_string(spp) + ".exr"), write_exr(t.image));
+    }
+    p.rmse = std::sqrt(p.rmse / (1 + double(spp) / ref_spp));
+    curve.push_back(p);
+    std::printf("%d,%.4f,%.4f,%.5f,%.0f,%.0f\n", spp, p.seconds, p.cpu_seconds, p.rmse,
+                double(stats.samples) / (p.seconds * o.seeds), double(stats.rays) / (p.seconds * o.seeds));
+  }
+  std::printf("relative_rmse,seconds,cpu_seconds,extrapolated\n");
+  for (const double level : kErrorLevels) {
+    const auto [wall, extrapolated] = time_to(curve, level, &Point::seconds);
+    std::printf("%.3f,%.4f,%.4f,%s\n", level, wall, time_to(curve, level, &Point::cpu_seconds).first,
+                extrapolated ? "yes" : "no");
   }
   return 0;
 }

@@ -22,7 +22,6 @@
 
 #include "bench_data.hpp"
 #include "engine/core/constants.hpp"
-#include "engine/fresnel/metals.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/sun/sun_extraction.hpp"
@@ -30,19 +29,6 @@
 
 namespace lp::render {
 namespace {
-
-SceneDesc diffuse_and_glossy() {
-  const ConductorPreset& gold = lookup_metal("gold");
-  SceneDesc s;
-  s.camera = {{0, -6.5f, 2.2f}, {0, 0, -0.2f}, {0, 0, 1}, 35};
-  s.objects = {
-      {SphereObject{{-1.2f, 0, 0}, 0.5f}, DiffuseMaterial{{0.8f, 0.8f, 0.8f}}},
-      {SphereObject{{0, 0, 0}, 0.5f}, PlasticMaterial{{0.7f, 0.1f, 0.08f}, 1.5f, 0.15f}},
-      {SphereObject{{1.2f, 0, 0}, 0.5f}, ConductorMaterial{gold.eta_rgb(), gold.k_rgb(), 0.3f}},
-      {PlaneObject{{0, 0, -0.5f}, {0, 0, 1}}, DiffuseMaterial{{0.5f, 0.5f, 0.5f}}},
-  };
-  return s;
-}
 
 struct Timed {
   Image image;
@@ -100,7 +86,7 @@ void compare(const std::string& name, const std::shared_ptr<const EnvMap>& map, 
   }
   std::printf("# %s %dx%d: sun radius %.3f deg, %.1f%% of the power\n", name.c_str(), map->width(),
               map->height(), e.sun->angular_radius * 180 / kPi, 100 * e.sun->share);
-  const SceneDesc scene = diffuse_and_glossy();
+  const SceneDesc scene = bench::diffuse_and_glossy();
   const Timed ref = render(scene, SunMode::None, size, ref_spp, 1000, arena, map);
   const Timed ref_extract = render(scene, SunMode::Extract, size, ref_spp, 1000, arena, map);
   std::printf(

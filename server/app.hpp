@@ -27,6 +27,12 @@ inline JobManagerConfig prefilter_job_config(const Options& o) {
   return {1, o.max_queued_jobs, o.max_finished_jobs, o.max_finished_mb << 20, o.threads, o.render_priority};
 }
 
+// The render arenas a server may have working at once: a render job's, a prefilter's, a Redis worker's.
+inline int render_arenas(const Options& o) {
+  const bool worker = o.redis && o.role != ServerRole::Api;
+  return render_job_config(o).max_running + prefilter_job_config(o).max_running + (worker ? 1 : 0);
+}
+
 // Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
 inline int64_t decoding_budget_bytes(const Options& o) {
   return std::min(o.max_memory_mb << 20, 2 * EnvMap::image_bytes(o.limits.max_pixels, 1));

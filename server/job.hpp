@@ -72,8 +72,8 @@ class Job {
   // A shutdown asked the job to stop at its next safe point (a pass boundary) and become interrupted.
   bool interrupt_requested() const { return stop_.load() == StopRequest::Interrupt; }
 
-  // Does the work on a runner thread, inside the job's task arena. Returns true when all the work was
-  // done, false when it stopped early because cancel_flag() became true. Throws lp::Error (or any
+  // Does the work on a worker of the job's task arena (its runner thread waits). Returns true when all the
+  // work was done, false when it stopped early because cancel_flag() became true. Throws lp::Error (or any
   // std::exception) to fail the job.
   virtual bool run() = 0;
   virtual void describe(nlohmann::json& out) const = 0;

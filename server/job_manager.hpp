@@ -1,8 +1,9 @@
 #pragma once
 // Runs background jobs: a bounded FIFO queue, a fixed number of runner threads, each running one job at a
 // time inside its own tbb::task_arena (so concurrent jobs share the cores fairly: oneTBB divides its
-// workers between the arenas), and a bounded list of finished jobs kept for their results (oldest dropped).
-// Thread-safe. The destructor cancels every job and joins the runners.
+// workers between the arenas, and the runners only wait: render_arena.hpp), and a bounded list of finished
+// jobs kept for their results (oldest dropped). Thread-safe. The destructor cancels every job and joins the
+// runners.
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>

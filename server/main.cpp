@@ -15,6 +15,7 @@
 #include "server/envmap_loading.hpp"
 #include "server/health_check.hpp"
 #include "server/logging.hpp"
+#include "server/render_arena.hpp"
 #include "server/render_worker.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
@@ -118,9 +119,10 @@ int main(int argc, char** argv) {
   if (!options) return 0;
   if (!options->health_check_url.empty()) return lp::server::run_health_check(options->health_check_url);
   lp::server::Logging logging(options->log_level, options->log_format);
-  std::optional<tbb::global_control> threads;
-  if (options->threads > 0)
-    threads.emplace(tbb::global_control::max_allowed_parallelism, size_t(options->threads));
+  // Render arenas run on workers alone (render_arena.hpp): the limit counts them and one caller.
+  const tbb::global_control threads(
+      tbb::global_control::max_allowed_parallelism,
+      lp::server::RenderArena::render_workers(options->threads, lp::server::render_arenas(*options)) + 1);
 
   lp::server::App app(*options);
   lp::server::Server server(app);

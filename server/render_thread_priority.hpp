@@ -10,10 +10,9 @@
 //                  program, but they stall for as long as anything else keeps the cores busy, and so can
 //                  a request's parallel loop that a lowered oneTBB worker joined.
 //   normal         renders share the cores equally with everything else.
-// The runner thread of a job and each oneTBB worker that joins a render arena are lowered the first time
-// they render; an unprivileged thread cannot raise itself again, so such a worker stays lowered when it
-// later helps a request's parallel loop (bulk work: large sample sets, decodes; the request's own thread
-// keeps its priority).
+// Each oneTBB worker that joins a render arena is lowered the first time it renders; an unprivileged thread
+// cannot raise itself again, so such a worker stays lowered when it later helps a request's parallel loop
+// (bulk work: large sample sets, decodes; the request's own thread keeps its priority).
 #include <oneapi/tbb/task_arena.h>
 #include <oneapi/tbb/task_scheduler_observer.h>
 

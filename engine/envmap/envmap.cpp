@@ -67,10 +67,12 @@ Rgb EnvMap::radiance(Vec3 direction) const {
   return radiance(latlong::uv(direction));
 }
 
-std::shared_ptr<const EnvMapSampler> EnvMap::sampler(LuminanceMode mode) const {
-  return derived<EnvMapSampler>(std::string("sampler:") + enum_name(mode),
-                                EnvMapSampler::memory_bytes(width(), height()),
-                                [&] { return std::make_shared<const EnvMapSampler>(*this, mode); });
+std::shared_ptr<const EnvMapSampler> EnvMap::sampler(LuminanceMode mode, SamplerWeights weights) const {
+  const bool compensated = weights == SamplerWeights::MisCompensated;
+  return derived<EnvMapSampler>(
+      std::string("sampler:") + enum_name(mode) + (compensated ? ":compensated" : ""),
+      EnvMapSampler::memory_bytes(width(), height()),
+      [&] { return std::make_shared<const EnvMapSampler>(*this, mode, weights); });
 }
 
 // The derived data by key. Shared with the eviction callbacks, which may outlive the map.

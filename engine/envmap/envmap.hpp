@@ -18,6 +18,12 @@ namespace lp {
 
 class EnvMapSampler;
 
+// What an importance sampler weighs pixels by: their radiance, or for MIS compensation (Karlik et al.
+// 2019) only the part of it above the map's mean. A renderer that weighs light samples against BSDF
+// samples by MIS does best with light samples that leave the map's uniform part to the BSDF, which
+// samples it well, and go where the map is brighter than its mean.
+enum class SamplerWeights { Radiance, MisCompensated };
+
 class EnvMap {
  public:
   // Applies the invalid-pixel policy (see invalid_pixels.hpp); every derived quantity uses the result.
@@ -43,8 +49,9 @@ class EnvMap {
   Rgb radiance(Vec3 direction) const;
   Rgb radiance(latlong::Uv uv) const;
 
-  // The importance sampler for a luminance mode, built on first use and cached.
-  std::shared_ptr<const EnvMapSampler> sampler(LuminanceMode mode) const;
+  // The importance sampler for a luminance mode and weighting, built on first use and cached.
+  std::shared_ptr<const EnvMapSampler> sampler(LuminanceMode mode,
+                                               SamplerWeights weights = SamplerWeights::Radiance) const;
 
   // The budget the map's memory comes from: `image` holds the image's bytes, and derived data built
   // from now on reserves its own (see derived). Call before the map is shared.

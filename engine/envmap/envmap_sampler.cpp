@@ -14,19 +14,28 @@ float row_factor(int y, int height) {
   return float(std::sin(latlong::row_centre_theta(y, height)));
 }
 
-PiecewiseConstant2D::RowFiller sampling_weights(const Image& image, LuminanceMode mode) {
-  return [&image, mode](int y, float* out) {
+PiecewiseConstant2D::RowFiller sampling_weights(const Image& image, LuminanceMode mode, float offset) {
+  return [&image, mode, offset](int y, float* out) {
     const float s = row_factor(y, image.height());
     const float* row = image.row(y);
     for (int x = 0; x < image.width(); ++x)
-      out[x] = luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) * s;
+      out[x] = std::max(0.0f, luminance({row[3 * x], row[3 * x + 1], row[3 * x + 2]}, mode) - offset) * s;
   };
+}
+
+float compensation_offset(const EnvMap& map, LuminanceMode mode, SamplerWeights weights) {
+  if (weights != SamplerWeights::MisCompensated) return 0;
+  const float mean = luminance(map.mean_radiance(), mode);
+  return map.max_luminance(mode) > mean ? mean : 0;
 }
 
 }  // namespace
 
-EnvMapSampler::EnvMapSampler(const EnvMap& map, LuminanceMode mode)
-    : map_(map), mode_(mode), dist_(map.width(), map.height(), sampling_weights(map.image(), mode)) {}
+EnvMapSampler::EnvMapSampler(const EnvMap& map, LuminanceMode mode, SamplerWeights weights)
+    : map_(map),
+      mode_(mode),
+      offset_(compensation_offset(map, mode, weights)),
+      dist_(map.width(), map.height(), sampling_weights(map.image(), mode, offset_)) {}
 
 double EnvMapSampler::row_mean_luminance(int y) const {
   return dist_.row_weight_sums()[size_t(y)] / (double(dist_.width()) * row_factor(y, dist_.height()));
@@ -54,8 +63,9 @@ EnvSample EnvMapSampler::sample(float u1, float u2) const {
 }
 
 std::shared_ptr<const AliasTable2D> EnvMapSampler::alias_table() const {
-  return map_.derived<AliasTable2D>(std::string("alias:") + enum_name(mode_),
-                                    AliasTable2D::memory_bytes(dist_.width(), dist_.height()),
+  // A compensated sampler that fell back to the plain weights shares the plain one's table.
+  const std::string key = std::string("alias:") + enum_name(mode_) + (offset_ > 0 ? ":compensated" : "");
+  return map_.derived<AliasTable2D>(key, AliasTable2D::memory_bytes(dist_.width(), dist_.height()),
                                     [&] { return std::make_shared<const AliasTable2D>(dist_); });
 }
 

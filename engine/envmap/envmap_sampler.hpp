@@ -1,6 +1,9 @@
 #pragma once
 // Importance sampling of an environment map: pixel weights luminance * sin(theta of the row centre),
 // solid-angle pdf = p(u, v) / (2 pi^2 sin theta) with theta of the sample itself.
+// With SamplerWeights::MisCompensated (envmap.hpp), the weights are max(0, luminance - mean luminance)
+// * sin(theta); a map no pixel of which is above its mean (a uniform one) keeps the plain weights.
+// Samples carry the pixel's whole radiance either way.
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -24,7 +27,7 @@ struct EnvSample {
 
 class EnvMapSampler {
  public:
-  EnvMapSampler(const EnvMap& map, LuminanceMode mode);
+  EnvMapSampler(const EnvMap& map, LuminanceMode mode, SamplerWeights weights = SamplerWeights::Radiance);
   // The bytes a sampler of a width x height map holds: its inverse CDFs. The alias table is a cache
   // entry of the map of its own (alias_table), made and reserved only where independent samples are drawn.
   static int64_t memory_bytes(int64_t width, int64_t height) {
@@ -58,11 +61,14 @@ class EnvMapSampler {
     __builtin_prefetch(map_.image().row(y) + 3 * x);
   }
 
-  // The distribution over pixels; its rows' weights are their mean luminance * sin(theta).
+  // The distribution over pixels; its rows' weights are their mean luminance (less the offset, per
+  // pixel, when compensated) * sin(theta).
   const PiecewiseConstant2D& distribution() const { return dist_; }
   double row_mean_luminance(int y) const;
   const EnvMap& map() const { return map_; }
   LuminanceMode mode() const { return mode_; }
+  // The luminance taken off every pixel's weight: the map's mean when compensated, else 0.
+  float luminance_offset() const { return offset_; }
 
  private:
   // p / (2 pi^2 sin theta), with sin theta clamped away from zero so that samples at the exact pole
@@ -74,6 +80,7 @@ class EnvMapSampler {
 
   const EnvMap& map_;
   LuminanceMode mode_;
+  float offset_;
   PiecewiseConstant2D dist_;
 };
 

@@ -18,16 +18,18 @@ struct CoarseGrid {
   std::shared_ptr<const EnvMapSampler> sampler;
 };
 
-std::shared_ptr<const CoarseGrid> coarse_grid(const EnvMap& map, int max_width) {
+std::shared_ptr<const CoarseGrid> coarse_grid(const EnvMap& map, int max_width, SamplerWeights weights) {
   const int level = EnvMapLevels::level_for_width(map.width(), max_width);
   const int64_t bytes = EnvLight::grid_memory_bytes(map.width(), map.height(), max_width);
-  return map.derived<CoarseGrid>("importance-grid/" + std::to_string(max_width), bytes, [&] {
-    auto g = std::make_shared<CoarseGrid>();
-    g->levels = std::make_shared<EnvMapLevels>(map, level);
-    g->grid = g->levels->coarsest_map();
-    g->sampler = g->grid->sampler(kImportanceLuminance);
-    return g;
-  });
+  const bool compensated = weights == SamplerWeights::MisCompensated;
+  return map.derived<CoarseGrid>(
+      "importance-grid/" + std::to_string(max_width) + (compensated ? "/compensated" : ""), bytes, [&] {
+        auto g = std::make_shared<CoarseGrid>();
+        g->levels = std::make_shared<EnvMapLevels>(map, level);
+        g->grid = g->levels->coarsest_map();
+        g->sampler = g->grid->sampler(kImportanceLuminance, weights);
+        return g;
+      });
 }
 
 }  // namespace
@@ -42,13 +44,14 @@ EnvLight::EnvLight(std::shared_ptr<const EnvMap> map, const Lighting& lighting)
   // A black map lights nothing; it has no distribution to sample (sample_importance then gives pdf 0).
   dark_ = max_component(map_->power()) <= 0;
   const bool importance = lighting.mode == LightingMode::EnvMap && !dark_;
+  const auto weights = lighting.mis_compensation ? SamplerWeights::MisCompensated : SamplerWeights::Radiance;
   if (map_->width() <= lighting.importance_max_width) {
     levels_ = std::make_shared<EnvMapLevels>(*map_, 0);
     grid_ = map_;
-    if (importance) importance_ = map_->sampler(kImportanceLuminance);
+    if (importance) importance_ = map_->sampler(kImportanceLuminance, weights);
     return;
   }
-  const auto coarse = coarse_grid(*map_, lighting.importance_max_width);
+  const auto coarse = coarse_grid(*map_, lighting.importance_max_width, weights);
   levels_ = std::shared_ptr<const EnvMapLevels>(coarse, coarse->levels.get());
   grid_ = std::shared_ptr<const EnvMap>(coarse, coarse->grid.get());
   if (importance) importance_ = std::shared_ptr<const EnvMapSampler>(coarse, coarse->sampler.get());

@@ -1,7 +1,8 @@
 #pragma once
 // The environment map as the scene's light at infinity: rotated about z by `rotation_deg` (a feature
 // at azimuth phi in the map appears at phi + rotation in the world), scaled by `intensity`.
-// Sampling: importance (a sampler over the importance grid) or uniform over the sphere.
+// Sampling: importance (a sampler over the importance grid, MIS-compensated unless the lighting turns
+// it off: envmap.hpp, SamplerWeights) or uniform over the sphere.
 //
 // Two resolutions. The importance grid is the map, or for a map wider than
 // Lighting::importance_max_width the first of its coarser levels (envmap_levels.hpp) that fits: light

@@ -113,6 +113,9 @@ struct Lighting {
   // The widest importance grid (env_light.hpp): a wider map is sampled on its first coarser level
   // that fits. Not a request field: the engine's trade between sampling memory and fidelity.
   int importance_max_width = limits::kDefaultImportanceMaxWidth;
+  // Light samples from the map's MIS-compensated distribution (envmap.hpp, SamplerWeights). Not a request
+  // field either: it only lowers the noise; off, for comparing the two.
+  bool mis_compensation = true;
   void validate(const std::string& prefix) const;
 };
 

@@ -271,6 +271,65 @@ INSTANTIATE_TEST_SUITE_P(Draws, ChiSquarePerPixel,
                          ::testing::Combine(::testing::ValuesIn(kModes), ::testing::ValuesIn(kDraws)),
                          per_pixel_case_name);
 
+// MIS compensation: pixels weigh their luminance above the map's solid-angle mean, times sin(theta).
+TEST(CompensatedSampler, WeighsOnlyTheLuminanceAboveTheMapsMean) {
+  const EnvMap map = [] {
+    Image image(16, 8);
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 16; ++x) image.set(x, y, Rgb{float(x % 5), float(y), 0.5f} * 0.7f);
+    return EnvMap(std::move(image));
+  }();
+  const auto sampler = map.sampler(LuminanceMode::Average, SamplerWeights::MisCompensated);
+  const float mean = luminance(map.mean_radiance(), LuminanceMode::Average);
+  EXPECT_FLOAT_EQ(sampler->luminance_offset(), mean);
+  std::vector<double> weights;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x)
+      weights.push_back(
+          std::max(0.0, double(luminance(map.image().at(x, y), LuminanceMode::Average)) - mean) *
+          std::sin(latlong::row_centre_theta(y, 8)));
+  const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  int zero = 0;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const double expected = weights[size_t(y * 16 + x)] * 16 * 8 / total;  // density: mean 1 per pixel
+      EXPECT_NEAR(sampler->distribution().density(x, y), expected, 1e-5 * (1 + expected)) << x << ", " << y;
+      zero += expected == 0;
+    }
+  EXPECT_GT(zero, 16);  // the darker pixels are left to BSDF samples
+}
+
+TEST(CompensatedSampler, AUniformMapKeepsThePlainWeights) {
+  const EnvMap map = constant_map(64, 32, {2, 2, 2});
+  const auto plain = map.sampler(LuminanceMode::Average);
+  const auto compensated = map.sampler(LuminanceMode::Average, SamplerWeights::MisCompensated);
+  EXPECT_EQ(compensated->luminance_offset(), 0.0f);
+  for (int y = 0; y < map.height(); y += 7)
+    for (int x = 0; x < map.width(); x += 5)
+      EXPECT_EQ(compensated->distribution().density(x, y), plain->distribution().density(x, y));
+}
+
+class ChiSquareCompensated : public ::testing::TestWithParam<std::tuple<std::string, Draw>> {};
+
+TEST_P(ChiSquareCompensated, SamplesMatchTheSamplersPdf) {
+  const auto& [name, draw] = GetParam();
+  const auto sampler = test::real_map(name)->sampler(LuminanceMode::Average, SamplerWeights::MisCompensated);
+  ASSERT_GT(sampler->luminance_offset(), 0.0f);
+  const auto samples = draw_samples(*sampler, draw, 1'000'000, 777);
+  const auto r = chi_square_of(*sampler, int(samples.size()), [&](int i) { return samples[size_t(i)]; });
+  EXPECT_GT(r.p_value, 0.01) << r.summary();
+}
+
+std::string compensated_case_name(const ::testing::TestParamInfo<std::tuple<std::string, Draw>>& info) {
+  const std::string& name = std::get<0>(info.param);
+  return name.substr(0, name.find('.')) + "_" + draw_name(std::get<1>(info.param));
+}
+
+INSTANTIATE_TEST_SUITE_P(RealMaps, ChiSquareCompensated,
+                         ::testing::Combine(::testing::Values("forest.exr", "city.exr", "studio.hdr"),
+                                            ::testing::Values(Draw::Sobol, Draw::IndependentAlias)),
+                         compensated_case_name);
+
 // A biased sampler must fail the same test, or the test proves nothing.
 TEST(ChiSquare, DetectsASamplerThatIgnoresSinTheta) {
   const auto map = test::real_map("forest.exr");

@@ -53,8 +53,8 @@ TEST(RenderSampling, EveryDimensionPairIsA02Net) {
 
 TEST(RenderSampling, EnvLightLocatesTheSampledPixelsPdfAndRadiance) {
   const auto map = std::make_shared<const EnvMap>(read_image_file(lp::test::envmap_path("forest.exr")).image);
-  const auto reference = map->sampler(kImportanceLuminance);
-  const EnvLight env(map, Lighting{});
+  const auto reference = map->sampler(kImportanceLuminance, SamplerWeights::MisCompensated);
+  const EnvLight env(map, Lighting{});  // compensated by default
   // A direction computed in float may land a rounding error away from its pixel: a neighbouring
   // pixel's pdf and radiance for a few samples in 10^4 at pixel edges.
   Rng rng(3, 4);
