@@ -1,7 +1,8 @@
 // The path tracer: the `sphere` and `materials` presets, and the sphere as rough gold (GGX alpha 0.5),
 // on forest.exr (1024 x 512) at fixed spp and thread count, reporting camera samples/s and rays/s (all
 // rays: camera, bounce, shadow); and the raw Embree throughput (rtcIntersect1 / rtcOccluded1 on the
-// same scenes, random rays) as the ceiling. Rates are per wall-clock second; the *_per_cpu_s counters
+// same scenes, random rays) as the ceiling, and the tracer's rays/s as a fraction of it measured side by
+// side (RenderOfCeiling). Rates are per wall-clock second; the *_per_cpu_s counters
 // divide by the process CPU time instead (all threads), which stays meaningful when other work shares
 // the cores.
 // Run: ./build/bin/render_bench --benchmark_min_time=2
@@ -10,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <chrono>
 #include <ctime>
 #include <memory>
 #include <vector>
@@ -143,47 +145,52 @@ std::vector<Ray> random_rays(size_t n) {
   return rays;
 }
 
+// Traces `rays` one by one (rtcIntersect1, or rtcOccluded1) on the arena's threads; returns the hits.
+uint64_t trace_raw(const EmbreeScene& scene, const std::vector<Ray>& rays, bool occluded,
+                   tbb::task_arena& arena) {
+  std::atomic<uint64_t> hits{0};
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+          RTCIntersectContext context;
+          uint64_t local = 0;
+          for (size_t i = r.begin(); i != r.end(); ++i) {
+            rtcInitIntersectContext(&context);
+            RTCRayHit rh{};
+            rh.ray.org_x = rays[i].origin.x, rh.ray.org_y = rays[i].origin.y, rh.ray.org_z = rays[i].origin.z;
+            rh.ray.dir_x = rays[i].direction.x, rh.ray.dir_y = rays[i].direction.y,
+            rh.ray.dir_z = rays[i].direction.z;
+            rh.ray.tfar = std::numeric_limits<float>::infinity();
+            rh.ray.mask = ~0u;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            if (occluded) {
+              rtcOccluded1(scene.handle(), &context, &rh.ray);
+              local += rh.ray.tfar < 0;
+            } else {
+              rtcIntersect1(scene.handle(), &context, &rh);
+              local += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            }
+          }
+          hits += local;
+        });
+  });
+  return hits.load();
+}
+
 // args: preset index, 0 = rtcIntersect1 / 1 = rtcOccluded1, threads.
 void BM_EmbreeRaw(benchmark::State& state) {
   const EmbreeScene scene(*scene_preset(kPresets[state.range(0)]), {});
   const std::vector<Ray> rays = random_rays(1 << 16);
   const bool occluded = state.range(1) == 1;
   tbb::task_arena arena(int(state.range(2)));
-  std::atomic<uint64_t> hits{0};
+  uint64_t hits = 0;
   const std::clock_t cpu0 = std::clock();
-  for (auto _ : state) {
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024),
-                        [&](const tbb::blocked_range<size_t>& r) {
-                          RTCIntersectContext context;
-                          uint64_t local = 0;
-                          for (size_t i = r.begin(); i != r.end(); ++i) {
-                            rtcInitIntersectContext(&context);
-                            RTCRayHit rh{};
-                            rh.ray.org_x = rays[i].origin.x, rh.ray.org_y = rays[i].origin.y,
-                            rh.ray.org_z = rays[i].origin.z;
-                            rh.ray.dir_x = rays[i].direction.x, rh.ray.dir_y = rays[i].direction.y,
-                            rh.ray.dir_z = rays[i].direction.z;
-                            rh.ray.tfar = std::numeric_limits<float>::infinity();
-                            rh.ray.mask = ~0u;
-                            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                            if (occluded) {
-                              rtcOccluded1(scene.handle(), &context, &rh.ray);
-                              local += rh.ray.tfar < 0;
-                            } else {
-                              rtcIntersect1(scene.handle(), &context, &rh);
-                              local += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                            }
-                          }
-                          hits += local;
-                        });
-    });
-  }
+  for (auto _ : state) hits += trace_raw(scene, rays, occluded, arena);
   const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   state.counters["rays/s"] =
       benchmark::Counter(double(state.iterations() * rays.size()), benchmark::Counter::kIsRate);
   state.counters["rays_per_cpu_s"] = double(state.iterations() * rays.size()) / cpu;
-  state.counters["hit_fraction"] = double(hits.load()) / double(state.iterations() * rays.size());
+  state.counters["hit_fraction"] = double(hits) / double(state.iterations() * rays.size());
 }
 BENCHMARK(BM_EmbreeRaw)
     ->ArgNames({"preset", "occluded", "threads"})
@@ -193,6 +200,50 @@ BENCHMARK(BM_EmbreeRaw)
     ->Args({1, 0, 1})
     ->Args({1, 0, 2})
     ->Args({1, 1, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The path tracer's rays/s as a fraction of the raw ceiling, both measured in each iteration on the
+// same preset, map-lit (envmap mode), at the same thread count: a render pass of kSpp, then as many
+// random rays through rtcIntersect1 as the pass traced. of_ceiling compares rates per CPU second (the
+// steadier figure when other work shares the cores), of_ceiling_wall per wall second.
+// args: preset index, threads.
+void BM_RenderOfCeiling(benchmark::State& state) {
+  const SceneDesc preset = *scene_preset(kPresets[state.range(0)]);
+  RenderSettings settings;
+  settings.width = settings.height = kSize;
+  tbb::task_arena arena(int(state.range(1)));
+  Renderer renderer(preset, Lighting{}, settings, forest());
+  const EmbreeScene scene(preset, {});
+  std::atomic<bool> cancel{false};
+  double render_cpu = 0, render_wall = 0, raw_cpu = 0, raw_wall = 0;
+  uint64_t raw_rays = 0;
+  const auto timed = [](double& cpu, double& wall, auto&& work) {
+    const std::clock_t c0 = std::clock();
+    const auto w0 = std::chrono::steady_clock::now();
+    work();
+    cpu += double(std::clock() - c0) / CLOCKS_PER_SEC;
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+  };
+  for (auto _ : state) {
+    const uint64_t before = renderer.stats().rays;
+    timed(render_cpu, render_wall, [&] { arena.execute([&] { renderer.render_pass(kSpp, cancel, {}); }); });
+    const std::vector<Ray> rays = random_rays(size_t(renderer.stats().rays - before));
+    timed(raw_cpu, raw_wall, [&] { trace_raw(scene, rays, false, arena); });
+    raw_rays += rays.size();
+  }
+  const double rays = double(renderer.stats().rays);
+  state.counters["rays_per_cpu_s"] = rays / render_cpu;
+  state.counters["raw_rays_per_cpu_s"] = double(raw_rays) / raw_cpu;
+  state.counters["of_ceiling"] = (rays / render_cpu) / (double(raw_rays) / raw_cpu);
+  state.counters["of_ceiling_wall"] = (rays / render_wall) / (double(raw_rays) / raw_wall);
+}
+BENCHMARK(BM_RenderOfCeiling)
+    ->ArgNames({"preset", "threads"})
+    ->Args({0, 1})
+    ->Args({0, 2})
+    ->Args({1, 1})
+    ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

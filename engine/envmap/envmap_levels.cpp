@@ -86,8 +86,9 @@ Rgb EnvMapLevels::bilinear(int k, latlong::Uv uv) const {
   const float fx = uv.u * float(w) - 0.5f, fy = uv.v * float(h) - 0.5f;
   const float x0f = std::floor(fx), y0f = std::floor(fy);
   const float tx = fx - x0f, ty = fy - y0f;
-  const auto wrap = [w](int x) { return ((x % w) + w) % w; };
-  const int x0 = wrap(int(x0f)), x1 = wrap(int(x0f) + 1);
+  // fx is in [-0.5, w - 0.5] for u in [0, 1]: x0 in [-1, w - 1], wrapped without integer division.
+  const int x = int(x0f);
+  const int x0 = x < 0 ? x + w : x, x1 = x + 1 >= w ? x + 1 - w : x + 1;
   const int y0 = std::clamp(int(y0f), 0, h - 1), y1 = std::clamp(int(y0f) + 1, 0, h - 1);
   const Rgb top = image.at(x0, y0) * (1 - tx) + image.at(x1, y0) * tx;
   const Rgb bottom = image.at(x0, y1) * (1 - tx) + image.at(x1, y1) * tx;

@@ -30,7 +30,8 @@ class EnvMapLevels {
   const Image& level(int k) const { return *images_[size_t(k)]; }
   // The coarsest level as a map of its own, its image the level's (no copy); null for level 0 alone.
   std::shared_ptr<const EnvMap> coarsest_map() const { return top_; }
-  // Bilinear in level k (u wraps around, v is clamped at the poles).
+  // Bilinear in level k, uv in [0, 1]^2 as latlong::uv gives (u wraps around the seam, v is clamped at
+  // the poles).
   Rgb bilinear(int k, latlong::Uv uv) const;
   // Between the two levels around `level` (clamped to [0, coarsest]), bilinear in each.
   Rgb trilinear(latlong::Uv uv, float level) const;

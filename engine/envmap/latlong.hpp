@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/core/constants.hpp"
+#include "engine/core/fast_atan2.hpp"
 #include "engine/core/vec3.hpp"
 
 namespace lp::latlong {
@@ -23,15 +24,16 @@ inline Vec3 direction(Uv uv) {
   return direction_from_angles(uv.v * kPiF, uv.u * 2.0f * kPiF);
 }
 
-// u in [0, 1), v in [0, 1]; `d` need not be normalised.
+// u in [0, 1), v in [0, 1]; `d` need not be normalised (its squared components must not overflow or
+// all underflow a float). On every lookup of a path tracer: fast_atan2, within 3e-7 rad.
 inline Uv uv(Vec3 d) {
   // atan2 keeps full precision near the poles, where acos(z) loses it.
-  const float theta = std::atan2(std::hypot(d.x, d.y), d.z);
-  float phi = std::atan2(d.y, d.x);
+  const float theta = fast_atan2(std::sqrt(d.x * d.x + d.y * d.y), d.z);
+  float phi = fast_atan2(d.y, d.x);
   if (phi < 0) phi += 2.0f * kPiF;
-  float u = phi / (2.0f * kPiF);
+  float u = phi * (0.5f / kPiF);
   if (u >= 1.0f) u = 0.0f;
-  return {u, theta / kPiF};
+  return {u, std::min(theta * (1.0f / kPiF), 1.0f)};
 }
 
 // The pixel containing (u, v), clamped to the grid.

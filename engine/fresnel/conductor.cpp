@@ -16,9 +16,11 @@ ConductorFresnel fresnel_conductor_polarized(double cos_i, double eta_i, double 
   const std::complex<double> n2(eta * eta - k * k, 2 * eta * k);
   const std::complex<double> a = std::sqrt(
       std::complex<double>((eta - eta_i) * (eta + eta_i) - k * k + eta_i * eta_i * c * c, n2.imag()));
-  const std::complex<double> r_s = (eta_i * c - a) / (eta_i * c + a);
-  const std::complex<double> r_p = (n2 * c - eta_i * a) / (n2 * c + eta_i * a);
-  return {std::norm(r_s), std::norm(r_p)};
+  // |r|^2 as |numerator|^2 / |denominator|^2: no complex division (a library call handling infinities).
+  const auto reflectance = [](std::complex<double> num, std::complex<double> den) {
+    return std::norm(num) / std::norm(den);
+  };
+  return {reflectance(eta_i * c - a, eta_i * c + a), reflectance(n2 * c - eta_i * a, n2 * c + eta_i * a)};
 }
 
 double fresnel_conductor(double cos_i, double eta, double k) {

@@ -149,10 +149,58 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return surface_hit(r, {rh.ray.tfar,
+                         rh.hit.geomID,
+                         rh.hit.primID,
+                         rh.hit.u,
+                         rh.hit.v,
+                         {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z}});
+}
 
+void EmbreeScene::intersect_packet(std::span<const Ray> rays,
+                                   std::span<std::optional<SurfaceHit>> hits) const {
+  const int n = int(rays.size());
+  if (n == 0) return;
+  if (n > kPacket || hits.size() < rays.size())
+    throw Error(ErrorKind::InvalidArgument, "intersect_packet: more rays than a packet holds");
+  alignas(32) int valid[kPacket];
+  alignas(32) RTCRayHit8 rh;
+  for (int i = 0; i < kPacket; ++i) {
+    const Ray& r = rays[size_t(std::min(i, n - 1))];  // idle lanes repeat a ray, masked off
+    valid[i] = i < n ? -1 : 0;
+    rh.ray.org_x[i] = r.origin.x, rh.ray.org_y[i] = r.origin.y, rh.ray.org_z[i] = r.origin.z;
+    rh.ray.dir_x[i] = r.direction.x, rh.ray.dir_y[i] = r.direction.y, rh.ray.dir_z[i] = r.direction.z;
+    rh.ray.tnear[i] = 0;
+    rh.ray.tfar[i] = std::numeric_limits<float>::infinity();
+    rh.ray.time[i] = 0;
+    rh.ray.mask[i] = ~0u;
+    rh.ray.id[i] = 0;
+    rh.ray.flags[i] = 0;
+    rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect8(valid, scene_, &context, &rh);
+  for (int i = 0; i < n; ++i) {
+    if (rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
+      hits[size_t(i)].reset();
+      continue;
+    }
+    hits[size_t(i)] = surface_hit(rays[size_t(i)], {rh.ray.tfar[i],
+                                                    rh.hit.geomID[i],
+                                                    rh.hit.primID[i],
+                                                    rh.hit.u[i],
+                                                    rh.hit.v[i],
+                                                    {rh.hit.Ng_x[i], rh.hit.Ng_y[i], rh.hit.Ng_z[i]}});
+  }
+}
+
+SurfaceHit EmbreeScene::surface_hit(const Ray& r, const RawHit& raw) const {
   SurfaceHit hit;
-  hit.t = rh.ray.tfar;
-  hit.object = rh.hit.geomID;
+  hit.t = raw.t;
+  hit.object = raw.object;
   const Object& o = objects_[hit.object];
   const Vec3 p = r.origin + r.direction * hit.t;
   switch (o.kind) {
@@ -166,7 +214,7 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
       break;
     case Object::Kind::Mesh:
       hit.position = p;
-      fill_mesh_hit(o, rh.hit, hit);
+      fill_mesh_hit(o, raw, hit);
       return hit;
   }
   hit.shading_normal = hit.normal;
@@ -174,15 +222,15 @@ std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
   return hit;
 }
 
-void EmbreeScene::fill_mesh_hit(const Object& o, const RTCHit& rh, SurfaceHit& hit) const {
+void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& hit) const {
   const Model& m = o.model;
-  const size_t triangle = rh.primID;
+  const size_t triangle = raw.primitive;
   const uint32_t* tri = &m.indices[triangle * 3];
   const Vec3 a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
   const Vec3 n = cross(b - a, c - a);
   // Embree skips degenerate triangles, but one of float-rounded area may still be hit: use its normal.
-  hit.normal = dot(n, n) > 0 ? normalize(n) : normalize(Vec3{rh.Ng_x, rh.Ng_y, rh.Ng_z});
-  const float w1 = rh.u, w2 = rh.v, w0 = 1.0f - w1 - w2;
+  hit.normal = dot(n, n) > 0 ? normalize(n) : normalize(raw.ng);
+  const float w1 = raw.u, w2 = raw.v, w0 = 1.0f - w1 - w2;
   const Vec3 na = m.normals[tri[0]], nb = m.normals[tri[1]], nc = m.normals[tri[2]];
   const Vec3 ns = na * w0 + nb * w1 + nc * w2;
   hit.shading_normal = dot(ns, ns) > 0 ? normalize(ns) : hit.normal;

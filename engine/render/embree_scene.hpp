@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "engine/model/model.hpp"
@@ -42,6 +43,12 @@ class EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
+  // Up to kPacket rays traced together as one coherent packet (rtcIntersect8), for camera rays through
+  // neighbouring pixels: Embree then walks the hierarchy once for all of them. hits[i] is what
+  // intersect(rays[i]) gives, up to the rounding of Embree's packet kernels (a ray grazing a silhouette
+  // may fall on the other side of it); a ray's result does not depend on the other rays of the packet.
+  static constexpr int kPacket = 8;
+  void intersect_packet(std::span<const Ray> rays, std::span<std::optional<SurfaceHit>> hits) const;
   // True if anything lies along the ray within (0, t_max).
   bool occluded(const Ray& ray, float t_max = std::numeric_limits<float>::infinity()) const;
 
@@ -53,7 +60,15 @@ class EmbreeScene {
 
  private:
   struct Object;
-  void fill_mesh_hit(const Object& o, const RTCHit& rh, SurfaceHit& hit) const;
+  // What Embree reports of a hit, from a single ray or a packet's lane.
+  struct RawHit {
+    float t;
+    uint32_t object, primitive;
+    float u, v;  // barycentric
+    Vec3 ng;     // Embree's unnormalised geometric normal
+  };
+  SurfaceHit surface_hit(const Ray& r, const RawHit& raw) const;
+  void fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& hit) const;
   void add_sphere(uint32_t id, const SphereObject& s);
   void add_plane(uint32_t id, const PlaneObject& p, float half_size);
   void add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& limits);

@@ -26,7 +26,8 @@ Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_p
                        const IntegratorConfig& config)
     : scene_(scene), bsdfs_(bsdfs), env_(env), sun_(sun), lights_(lights), config_(config) {}
 
-Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const {
+Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit,
+                         PathSampler& sampler, uint64_t& rays) const {
   Rgb result{}, beta{1, 1, 1};
   Ray ray = camera_ray;
   bool delta_chain = true, last_delta = true;
@@ -38,7 +39,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& 
   RayCone cone = RayCone::from_pixel(config_.pixel_spread);
   for (int depth = 0;; ++depth) {
     ++rays;
-    const std::optional<SurfaceHit> hit = scene_.intersect(ray);
+    const std::optional<SurfaceHit> hit = depth == 0 ? camera_hit : scene_.intersect(ray);
     if (!hit) {
       if (depth == 0) escape = env_.locate(ray.direction);
       result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf, 1 - sun_choice);

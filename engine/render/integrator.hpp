@@ -42,8 +42,10 @@ class Integrator {
              const SunLight* sun, const std::vector<DirectionalLight>& lights,
              const IntegratorConfig& config);
 
-  // Radiance along a camera ray. Adds the rays it traces to `rays`.
-  Rgb radiance(const Ray& camera_ray, PathSampler& sampler, uint64_t& rays) const;
+  // Radiance along a camera ray, whose hit the caller traced (in packets, EmbreeScene::intersect_packet).
+  // Adds the rays of the path to `rays`, the camera ray included.
+  Rgb radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit, PathSampler& sampler,
+               uint64_t& rays) const;
 
  private:
   struct Shading {

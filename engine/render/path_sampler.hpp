@@ -36,17 +36,28 @@ class PathSampler {
   // Owen scrambling is reverse(LK(reverse(x))); the reversals of Sobol dimension 0 and of the index
   // cancel, so each coordinate costs one hash and one reversal.
   Point2 get_2d() {
-    const uint64_t h = mix64(pixel_seed_ + 0x9e3779b97f4a7c15ULL * ++dimension_);
-    const uint64_t h2 = mix64(h);
-    const uint32_t index = sobol::reverse_bits(sobol::laine_karras_permutation(reversed_index_, uint32_t(h)));
-    const uint32_t x = sobol::reverse_bits(sobol::laine_karras_permutation(index, uint32_t(h >> 32)));
+    const uint64_t h = next_hash();
+    const uint32_t index = shuffled_index(h);
     const uint32_t y = sobol::reverse_bits(
-        sobol::laine_karras_permutation(detail::kReversedDimension1(index), uint32_t(h2)));
-    return {sobol::to_unit_float(x), sobol::to_unit_float(y)};
+        sobol::laine_karras_permutation(detail::kReversedDimension1(index), uint32_t(mix64(h))));
+    return {first_coordinate(index, h), sobol::to_unit_float(y)};
   }
-  float get_1d() { return get_2d().x; }
+  // The x of the next get_2d(), without the work of its y.
+  float get_1d() {
+    const uint64_t h = next_hash();
+    return first_coordinate(shuffled_index(h), h);
+  }
 
  private:
+  uint64_t next_hash() { return mix64(pixel_seed_ + 0x9e3779b97f4a7c15ULL * ++dimension_); }
+  uint32_t shuffled_index(uint64_t h) const {
+    return sobol::reverse_bits(sobol::laine_karras_permutation(reversed_index_, uint32_t(h)));
+  }
+  static float first_coordinate(uint32_t index, uint64_t h) {
+    return sobol::to_unit_float(
+        sobol::reverse_bits(sobol::laine_karras_permutation(index, uint32_t(h >> 32))));
+  }
+
   uint64_t pixel_seed_;
   uint32_t reversed_index_;
   uint32_t dimension_ = 0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ namespace lp::render {
 namespace {
 
 inline constexpr int kTileSize = 16;
+inline constexpr int kPacket = EmbreeScene::kPacket;
 
 std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
   std::vector<std::unique_ptr<Bsdf>> out;
@@ -102,7 +104,9 @@ struct Renderer::Impl {
   }
 
   // Renders `spp` samples from `first_sample` of every pixel of the tile, handing each pixel's sum to
-  // `store(x, y, sum)`.
+  // `store(x, y, sum)`. The camera rays of one sample index in a run of kPacket pixels of a row are
+  // traced as one packet: which pixels share a packet depends only on the tile, so a pass, a range of
+  // samples or another thread count traces every ray alike. Each pixel adds its samples in index order.
   template <class Store>
   void render_tile(int tile, uint32_t first_sample, int spp, Store&& store) {
     const FlushDenormals ftz;
@@ -110,21 +114,33 @@ struct Renderer::Impl {
     const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
     uint64_t tile_rays = 0;
     for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        const uint64_t pixel = uint64_t(y) * uint64_t(settings.width) + uint64_t(x);
-        Rgb sum{};
-        for (int i = 0; i < spp; ++i) {
-          PathSampler sampler(settings.seed, pixel, first_sample + uint32_t(i));
-          const Point2 jitter = sampler.get_2d();
-          const Ray ray = camera.generate(float(x) + jitter.x, float(y) + jitter.y);
-          const Rgb l = integrator.radiance(ray, sampler, tile_rays);
-          if (finite(l)) sum += l;  // a numerical failure must not poison the image
-        }
-        store(x, y, sum);
+      for (int xs = x0; xs < x1; xs += kPacket) {
+        const int n = std::min(kPacket, x1 - xs);
+        Rgb sums[kPacket] = {};
+        for (int i = 0; i < spp; ++i) trace_packet(xs, y, n, first_sample + uint32_t(i), sums, tile_rays);
+        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k]);
       }
     }
     samples.fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0) * uint64_t(spp), std::memory_order_relaxed);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
+  }
+
+  // Sample `index` of the n pixels (x, y) .. (x + n - 1, y), added to sums[0 .. n).
+  void trace_packet(int x, int y, int n, uint32_t index, Rgb* sums, uint64_t& tile_rays) const {
+    std::optional<PathSampler> samplers[kPacket];
+    Ray camera_rays[kPacket];
+    std::optional<SurfaceHit> hits[kPacket];
+    for (int k = 0; k < n; ++k) {
+      const uint64_t pixel = uint64_t(y) * uint64_t(settings.width) + uint64_t(x + k);
+      PathSampler& sampler = samplers[k].emplace(settings.seed, pixel, index);
+      const Point2 jitter = sampler.get_2d();
+      camera_rays[k] = camera.generate(float(x + k) + jitter.x, float(y) + jitter.y);
+    }
+    geometry.intersect_packet({camera_rays, size_t(n)}, {hits, size_t(n)});
+    for (int k = 0; k < n; ++k) {
+      const Rgb l = integrator.radiance(camera_rays[k], hits[k], *samplers[k], tile_rays);
+      if (finite(l)) sums[k] += l;  // a numerical failure must not poison the image
+    }
   }
 
   RenderSettings settings;
