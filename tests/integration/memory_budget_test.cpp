@@ -109,7 +109,7 @@ TEST(MemoryBudgetApi, MapsFillTheBudgetCachesGoFirstThenLoadsAre507AndADeleteMak
   // Still up, and every map it holds is served.
   for (const auto& name : loaded) {
     EXPECT_EQ(get(s, "/api/v1/envmaps/" + name).status, 200) << name;
-    const Reply image = get(s, "/api/v1/envmaps/" + name + "/image?format=pfm");
+    const Reply image = retrying_503([&] { return get(s, "/api/v1/envmaps/" + name + "/image?format=pfm"); });
     EXPECT_EQ(image.status, 200) << name << ": " << image.body.substr(0, 300);
     EXPECT_EQ(image.body, map) << name;
   }
