@@ -53,7 +53,7 @@ std::vector<Neighbourhood> neighbourhoods(const std::vector<uint64_t>& q, int wi
 }  // namespace
 
 int adaptive_warmup_spp(int spp) {
-  return std::min(spp, std::clamp(spp / 4, 2, 16));
+  return std::min(spp, std::max(spp / 4, 2));
 }
 
 std::vector<uint32_t> allocate_samples(std::span<const float> sigma, int width, int height, uint64_t budget,

@@ -47,15 +47,15 @@ TEST(AdaptiveAllocation, APixelsOwnDeviationDoesNotChangeItsCount) {
 }
 
 TEST(AdaptiveAllocation, OneNoisyPixelSendsTheBudgetToItsNeighbours) {
-  // One pixel of deviation 1, all others 0: its 8 neighbours share the adaptive 90% of the budget
-  // (the allocation reads neighbours only), every other pixel gets the even 10%. The pixel itself, which
+  // One pixel of deviation 1, all others 0: its 8 neighbours share the adaptive 80% of the budget
+  // (the allocation reads neighbours only), every other pixel gets the even 20%. The pixel itself, which
   // sees no deviation but its own, counts as in an image without any: the mean, 8.
   std::vector<float> sigma(kSize * kSize, 0.0f);
   const int centre = 8 * kSize + 8;
   sigma[centre] = 1;
   const auto counts = allocate_samples(sigma, kSize, kSize, kBudget, 7, 0);
-  const double even = 0.1 * double(kBudget) / (kSize * kSize);  // 0.8
-  const double neighbour = 0.9 * double(kBudget) / 8 + even;    // 230.4 + 0.8
+  const double even = 0.2 * double(kBudget) / (kSize * kSize);  // 1.6
+  const double neighbour = 0.8 * double(kBudget) / 8 + even;    // 204.8 + 1.6
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const bool near = std::abs(x - 8) <= 1 && std::abs(y - 8) <= 1 && (x != 8 || y != 8);
@@ -84,11 +84,11 @@ TEST(AdaptiveAllocation, NoDeviationAnywhereGivesEveryPixelTheMean) {
   EXPECT_THROW(allocate_samples(sigma, kSize, kSize + 1, kBudget, 1, 0), Error);
 }
 
-TEST(AdaptiveAllocation, WarmupIsAQuarterWithinTwoAndSixteen) {
+TEST(AdaptiveAllocation, WarmupIsAQuarterAndAtLeastTwo) {
   EXPECT_EQ(adaptive_warmup_spp(1), 1);
   EXPECT_EQ(adaptive_warmup_spp(4), 2);
   EXPECT_EQ(adaptive_warmup_spp(32), 8);
-  EXPECT_EQ(adaptive_warmup_spp(512), 16);
+  EXPECT_EQ(adaptive_warmup_spp(512), 128);
 }
 
 }  // namespace
