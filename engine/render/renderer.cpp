@@ -109,14 +109,14 @@ struct Renderer::Impl {
     return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll;
   }
 
-  // Renders the samples of every pixel of the tile: pixel (x, y) draws `counts(x, y).n` samples from
-  // index `counts(x, y).first`, and hands their sum and the sum of their squared channels to
+  // Renders the samples of every pixel of the tile: pixel (x, y) draws `runs(x, y).n` samples from
+  // index `runs(x, y).first`, and hands their sum and the sum of their squared channels to
   // `store(x, y, sum, squares)`. The camera rays of one sample index in a run of kPacket pixels of a
   // row are traced as one packet (of those pixels that draw that sample): which pixels share a packet
   // depends only on the tile and the counts, so a pass, a range of samples or another thread count
   // traces every ray alike. Each pixel adds its samples in index order.
-  template <class Counts, class Store>
-  void render_tile(int tile, Counts&& counts, Store&& store) {
+  template <class Runs, class Store>
+  void render_tile(int tile, Runs&& runs_of, Store&& store) {
     const FlushDenormals ftz;
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
     const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
@@ -127,7 +127,7 @@ struct Renderer::Impl {
         SampleRun runs[kPacket];
         uint32_t longest = 0;
         for (int k = 0; k < n; ++k) {
-          runs[k] = counts(xs + k, y);
+          runs[k] = runs_of(xs + k, y);
           longest = std::max(longest, runs[k].n);
           tile_samples += runs[k].n;
         }
@@ -215,8 +215,8 @@ int Renderer::tile_count() const {
 bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_pass: spp must be >= 1");
   Film& film = impl_->film;
-  const auto counts = [&film, spp](int x, int y) { return SampleRun{film.count(x, y), uint32_t(spp)}; };
-  if (!impl_->render_into_film(cancel, on_tile, counts)) return false;
+  const auto runs = [&film, spp](int x, int y) { return SampleRun{film.count(x, y), uint32_t(spp)}; };
+  if (!impl_->render_into_film(cancel, on_tile, runs)) return false;
   film.merge_pass(spp);
   return true;
 }
