@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -57,34 +58,60 @@ TEST(RenderAdaptive, FurnaceWithLightSamplesIsTheAlbedoOnAverage) {
   EXPECT_NEAR(test::sphere_mean(image), 0.5, 2e-3);
 }
 
+// Running sums of one quantity over seeds: its mean and the standard error of that mean.
+struct Spread {
+  double sum = 0, sum_sq = 0;
+  int n = 0;
+  void add(double v) { sum += v, sum_sq += v * v, ++n; }
+  double mean() const { return sum / n; }
+  double standard_error() const { return std::sqrt(std::max(sum_sq / n - mean() * mean(), 0.0) / (n - 1)); }
+};
+
 TEST(RenderAdaptive, MeanAgreesWithUniformAtEqualSamples) {
-  // The materials preset (mirror, glass, metals) under a real map at 16 x 16: over K seeds, the image
-  // mean of adaptive passes of 16 spp on average and of uniform passes of 16 spp agree within 4
-  // standard errors of their difference, measured from the seeds' spread.
-  constexpr int kSeeds = 48, kSpp = 16;
+  // The materials preset (mirror, glass, metals) under a real map at 16 x 16, adaptive passes of 16
+  // spp on average against uniform passes of 16 spp, each seed rendered both ways (the adaptive
+  // render's samples of a pixel begin with the uniform one's, so the pair's difference is the test's
+  // noise). Over K seeds: the image means' mean difference lies within 4 standard errors of 0, each
+  // pixel's within 6 (the worst of the 240 pixels over six sets of seeds: 4.7, heavy-tailed pixels
+  // being far from normal), and the mean of the pixels' squared z-scores is that of Student's t with
+  // K - 1 degrees of freedom, 1.04, plus those tails (measured 1.04 to 1.20). This bounds a bias the
+  // allocation could bring in; it is too small a sample to show the one of a count that reads the
+  // pixel's own deviation among its neighbours' (at 400 seeds that moves the image mean by 4 standard
+  // errors, where the rule kept moves it by 0.5): the allocation's own test checks that rule directly.
+  constexpr int kSeeds = 48, kSpp = 16, kSize = 16;
   const SceneDesc scene = *scene_preset("materials");
   const auto map = std::make_shared<const EnvMap>(read_image_file(lp::test::envmap_path("forest.exr")).image);
   Lighting l = lighting(LightingMode::EnvMap);
   l.visible = false;
-  double sum[2] = {}, sum_sq[2] = {};
+  Spread image_difference;
+  std::vector<Spread> pixel_difference(kSize * kSize);
   for (int k = 0; k < kSeeds; ++k) {
-    const RenderSettings s = settings(16, 8, 100 + uint64_t(k));
-    const double means[2] = {image_mean(test::render(scene, l, s, map, kSpp)),
-                             image_mean(adaptive_render(scene, l, s, map, kSpp))};
-    for (int m = 0; m < 2; ++m) sum[m] += means[m], sum_sq[m] += means[m] * means[m];
+    const RenderSettings s = settings(kSize, 8, 100 + uint64_t(k));
+    const Image uniform = test::render(scene, l, s, map, kSpp),
+                adaptive = adaptive_render(scene, l, s, map, kSpp);
+    image_difference.add(image_mean(adaptive) - image_mean(uniform));
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const Rgb a = adaptive.at(x, y), u = uniform.at(x, y);
+        pixel_difference[size_t(y * kSize + x)].add((a.x + a.y + a.z - u.x - u.y - u.z) / 3);
+      }
   }
-  double mean[2], variance_of_mean[2];
-  for (int m = 0; m < 2; ++m) {
-    mean[m] = sum[m] / kSeeds;
-    variance_of_mean[m] = (sum_sq[m] / kSeeds - mean[m] * mean[m]) / (kSeeds - 1);
+  RecordProperty("image_difference", std::to_string(image_difference.mean()));
+  RecordProperty("standard_error", std::to_string(image_difference.standard_error()));
+  EXPECT_GT(image_difference.standard_error(), 0);
+  EXPECT_LT(std::abs(image_difference.mean()), 4 * image_difference.standard_error());
+  double z_squared = 0;
+  int pixels = 0;
+  for (const Spread& d : pixel_difference) {
+    if (d.standard_error() <= 0) continue;  // the same samples both ways
+    const double z = d.mean() / d.standard_error();
+    EXPECT_LT(std::abs(z), 6.0);
+    z_squared += z * z;
+    ++pixels;
   }
-  const double standard_error = std::sqrt(variance_of_mean[0] + variance_of_mean[1]);
-  RecordProperty("uniform_mean", std::to_string(mean[0]));
-  RecordProperty("adaptive_mean", std::to_string(mean[1]));
-  RecordProperty("standard_error", std::to_string(standard_error));
-  EXPECT_GT(standard_error, 0);
-  EXPECT_LT(std::abs(mean[0] - mean[1]), 4 * standard_error)
-      << "uniform " << mean[0] << " adaptive " << mean[1] << " standard error " << standard_error;
+  RecordProperty("mean_z_squared", std::to_string(z_squared / pixels));
+  EXPECT_GT(pixels, kSize * kSize / 2);
+  EXPECT_LT(z_squared / pixels, 1.5);
 }
 
 TEST(RenderAdaptive, SameSeedSameImageAtOneAndTwoThreads) {
