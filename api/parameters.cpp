@@ -133,6 +133,7 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(lower_bound_doc(request("height"), 1, settings.height));
   d.push_back(lower_bound_doc(request("spp"), 1, settings.spp));
   d.push_back(lower_bound_doc(request("max_depth"), double(kMaxDepth.min), settings.max_depth));
+  d.push_back(enum_doc(request("sampling"), std::optional(settings.sampling)));
   d.push_back(lower_bound_doc(request("seed"), 0, double(settings.seed)));
   d.push_back(range_doc(schema("RenderCamera", {"properties", "fov_deg"}), kFovDeg, camera.fov_deg));
   d.push_back(range_doc(schema("Vec3", {"items"}), kCoordinate));

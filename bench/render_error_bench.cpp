@@ -5,11 +5,14 @@
 // visible to the camera, as a transparent film in Cycles). Then the time each error level takes.
 // Usage: render_error_bench [scene=sphere] [mode=envmap] [size=64] [ref_spp=4096] [max_spp=256]
 //                           [threads=2] [out_dir] [--map=FILE] [--seeds=K]
-//                           [--mis-compensation=0|1]
+//                           [--mis-compensation=0|1] [--adaptive=0|1]
 //   scene: a preset, or `glossy` (bench_data.hpp: diffuse_and_glossy, no mirror or glass);
 //   out_dir: writes reference.exr and spp_<n>.exr;  --map: the map (default forest.exr);
 //   --seeds: K independent renders at each spp, whose squared errors are averaged (default 1);
-//   --mis-compensation=0: light samples from the map's plain distribution (envmap.hpp, SamplerWeights).
+//   --mis-compensation=0: light samples from the map's plain distribution (envmap.hpp, SamplerWeights);
+//   --adaptive=1: each render spends the same samples in all (spp x pixels) in one adaptive pass
+//   (Renderer::render_adaptive_pass: a uniform warm-up, then samples where the neighbours' variance is);
+//   the reference stays uniform.
 // The reference's own noise is taken out of each error: for independent unbiased renders of n and N
 // spp, E|I_n - R_N|^2 = (s^2/n)(1 + n/N), so the error of I_n against the expectation is the measured
 // one over sqrt(1 + n/N). Time is the render's wall time and the process's CPU time (all threads, scene
@@ -49,8 +52,20 @@ struct Timed {
   RenderStats stats;
 };
 
+// An adaptive pass where the engine has them; builds from before them render uniformly, so
+// bench/speedup_compare.sh can build this file against them.
+template <class R>
+void render_pass(R& renderer, int spp, bool adaptive, const std::atomic<bool>& cancel) {
+  if constexpr (requires { renderer.render_adaptive_pass(spp, cancel, {}); })
+    if (adaptive) {
+      renderer.render_adaptive_pass(spp, cancel, {});
+      return;
+    }
+  renderer.render_pass(spp, cancel, {});
+}
+
 Timed render(const SceneDesc& scene, const Lighting& lighting, int size, int spp, uint64_t seed,
-             tbb::task_arena& arena, const std::shared_ptr<const EnvMap>& map) {
+             tbb::task_arena& arena, const std::shared_ptr<const EnvMap>& map, bool adaptive = false) {
   RenderSettings settings;
   settings.width = settings.height = size;
   settings.seed = seed;
@@ -58,7 +73,7 @@ Timed render(const SceneDesc& scene, const Lighting& lighting, int size, int spp
   const std::clock_t c0 = std::clock();
   Renderer renderer(scene, lighting, settings, map);  // scene build included, as in Cycles' timing
   std::atomic<bool> cancel{false};
-  arena.execute([&] { renderer.render_pass(spp, cancel, {}); });
+  arena.execute([&] { render_pass(renderer, spp, adaptive, cancel); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return {renderer.image(), seconds, double(std::clock() - c0) / CLOCKS_PER_SEC, renderer.stats()};
 }
@@ -112,6 +127,7 @@ struct Options {
   std::filesystem::path map = bench::envmap_path("forest.exr");
   int seeds = 1;
   bool mis_compensation = true;
+  bool adaptive = false;
 };
 
 Options parse_options(int argc, char** argv) {
@@ -124,6 +140,8 @@ Options parse_options(int argc, char** argv) {
       o.seeds = std::max(1, std::atoi(a.c_str() + 8));
     else if (a.rfind("--mis-compensation=", 0) == 0)
       o.mis_compensation = a.back() != '0';
+    else if (a.rfind("--adaptive=", 0) == 0)
+      o.adaptive = a.back() != '0';
     else if (a.rfind("--", 0) != 0)
       o.args.push_back(a);
   }
@@ -156,9 +174,9 @@ int run(int argc, char** argv) {
   tbb::task_arena arena(threads);
 
   const Timed ref = render(*scene, lighting, size, ref_spp, 1000, arena, map);
-  std::printf("# lightprobe %s %s %dx%d on %s, %d threads, %d seeds; reference %d spp in %.2f s\n",
-              preset.c_str(), mode.c_str(), size, size, o.map.filename().c_str(), threads, o.seeds, ref_spp,
-              ref.seconds);
+  std::printf("# lightprobe %s %s %dx%d on %s, %d threads, %d seeds%s; reference %d spp in %.2f s\n",
+              preset.c_str(), mode.c_str(), size, size, o.map.filename().c_str(), threads, o.seeds,
+              o.adaptive ? ", adaptive" : "", ref_spp, ref.seconds);
   if (!out_dir.empty()) write_file(out_dir / "reference.exr", write_exr(ref.image));
   std::printf("spp,seconds,cpu_seconds,relative_rmse,samples_per_s,rays_per_s\n");
   std::vector<Point> curve;
@@ -166,7 +184,7 @@ int run(int argc, char** argv) {
     Point p{spp, 0, 0, 0};
     RenderStats stats;
     for (int k = 0; k < o.seeds; ++k) {
-      const Timed t = render(*scene, lighting, size, spp, 1 + uint64_t(k), arena, map);
+      const Timed t = render(*scene, lighting, size, spp, 1 + uint64_t(k), arena, map, o.adaptive);
       p.seconds += t.seconds / o.seeds;
       p.cpu_seconds += t.cpu_seconds / o.seeds;
       p.rmse += relative_mse(t.image, ref.image) / o.seeds;

@@ -5,12 +5,15 @@
 # preset on forest.exr, and the glossy scene (bench_data.hpp: diffuse, plastic and rough gold on a plane)
 # on city.exr, whose sun carries a fifth of the power; each at 1 and 2 threads. Prints, per case and error
 # level, the CPU seconds (all threads) and wall seconds each build takes to reach it, and their ratios.
-# Usage: bench/speedup_compare.sh BASE_COMMIT [BUILD=build] [size=64] [ref_spp=8192] [max_spp=512] [seeds=4]
+# Flags after the sixth argument go to both builds' runs (render_error_bench's, e.g. --adaptive=1; a build
+# whose engine lacks the option ignores it). References are always uniform.
+# Usage: bench/speedup_compare.sh BASE_COMMIT [BUILD=build] [size=64] [ref_spp=8192] [max_spp=512] [seeds=4] [flags]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 base_commit="${1:?usage: bench/speedup_compare.sh BASE_COMMIT [BUILD] [size] [ref_spp] [max_spp] [seeds]}"
 build="${2:-build}"
 size="${3:-64}" ref_spp="${4:-8192}" max_spp="${5:-512}" seeds="${6:-4}"
+flags=("${@:7}")
 maps="$(pwd)/../shared/data/envmaps"
 [[ -f "$maps/city.exr" ]] || maps="$(pwd)/tests/data/envmaps"
 new_bin="$build/bin/render_error_bench"
@@ -35,7 +38,7 @@ echo "case,threads,relative_rmse,base_cpu_s,new_cpu_s,cpu_ratio,base_wall_s,new_
 for case in "materials forest.exr" "glossy city.exr"; do
   read -r scene map <<< "$case"
   for threads in 1 2; do
-    args=("$scene" envmap "$size" "$ref_spp" "$max_spp" "$threads" "--map=$maps/$map" "--seeds=$seeds")
+    args=("$scene" envmap "$size" "$ref_spp" "$max_spp" "$threads" "--map=$maps/$map" "--seeds=$seeds" "${flags[@]}")
     "$base_bin" "${args[@]}" > "$work/base.txt"
     "$new_bin" "${args[@]}" > "$work/new.txt"
     cat "$work/base.txt" "$work/new.txt" >&2

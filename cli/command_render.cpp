@@ -28,7 +28,8 @@ std::string help() {
          "map file (OpenEXR, PFM, Radiance HDR) or `default`, the built-in procedural sky, and a mesh's\n"
          "\"path\" a .gltf, .glb or .obj model file; relative paths are taken from the scene file's folder.\n"
          "Other options set the request's top-level fields, replacing the file's:\n"
-         "--width, --height, --spp, --max-depth, --seed, --mipmaps, --normal-maps, and --envmap (a path\n"
+         "--width, --height, --spp, --max-depth, --seed, --mipmaps, --normal-maps, --sampling, and --envmap "
+         "(a path\n"
          "relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
@@ -51,9 +52,13 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
 Image render(const SceneRender& scene, bool progress) {
   const auto& r = scene.request;
   render::Renderer renderer(r.scene, r.lighting, r.settings, scene.envmap);
-  ProgressBar bar("render", renderer.tile_count(), progress);
+  // One pass; an adaptive one renders its uniform warm-up over the tiles first, then the rest.
+  const bool adaptive = r.settings.sampling == render::SamplingMode::Adaptive;
+  ProgressBar bar("render", renderer.tile_count() * (adaptive ? 2 : 1), progress);
   const std::atomic<bool> never{false};
-  renderer.render_pass(r.settings.spp, never, [&bar] { bar.advance(1); });
+  const auto on_tile = [&bar] { bar.advance(1); };
+  adaptive ? renderer.render_adaptive_pass(r.settings.spp, never, on_tile)
+           : renderer.render_pass(r.settings.spp, never, on_tile);
   bar.finish();
   return renderer.image();
 }

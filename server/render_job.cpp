@@ -8,22 +8,11 @@
 #include <stdexcept>
 
 #include "engine/image/image_io.hpp"
+#include "engine/render/pass_schedule.hpp"
 #include "server/envmap_fingerprint.hpp"
 #include "server/render_coordinator.hpp"
 
 namespace lp::server {
-
-std::vector<int> pass_schedule(int spp, int max_pass) {
-  std::vector<int> passes;
-  int done = 0, next = 1;
-  while (done < spp) {
-    const int pass = std::min(next, spp - done);
-    passes.push_back(pass);
-    done += pass;
-    if (passes.size() > 1) next = std::min(2 * next, max_pass);
-  }
-  return passes;
-}
 
 RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
                      std::shared_ptr<const Image> image, StateStore* store)
@@ -139,12 +128,18 @@ void RenderJob::checkpoint() {
   if (!previous.empty() && previous != file) store_->remove(store_->renders_dir() / previous);
 }
 
-// Drops the passes an earlier run finished; returns the samples per pixel they hold.
-int RenderJob::skip_done_passes(std::vector<int>& passes) const {
+// Drops the passes an earlier run finished; returns the samples per pixel they hold. An adaptive render
+// keeps neither its pixels' sample counts nor their noise across runs, so it starts over.
+int RenderJob::skip_done_passes(std::vector<render::RenderPass>& passes) const {
   const int done = spp_done();
+  if (done == 0) return 0;
+  if (request_.settings.sampling == render::SamplingMode::Adaptive) {
+    spdlog::info("render {} starts over: an adaptive render does not continue from {} spp", id(), done);
+    return 0;
+  }
   int sum = 0;
   size_t skipped = 0;
-  while (skipped < passes.size() && sum < done) sum += passes[skipped++];
+  while (skipped < passes.size() && sum < done) sum += passes[skipped++].spp;
   if (sum != done)
     throw std::runtime_error(fmt::format("{} samples per pixel done is not the end of a pass", done));
   passes.erase(passes.begin(), passes.begin() + std::ptrdiff_t(skipped));
@@ -163,7 +158,9 @@ bool RenderJob::run() {
     spdlog::info("render {} {} after {:.2f} s ({} spp done)", id(), how, elapsed_s(), spp_done());
   };
   try {
-    const bool ended = scale_out_             ? render_split()
+    // An adaptive render's passes depend on the whole image so far: it is never split into ranges.
+    const bool uniform = request_.settings.sampling == render::SamplingMode::Uniform;
+    const bool ended = scale_out_ && uniform  ? render_split()
                        : ranges_done_.empty() ? render_here()
                                               : render_ranges_here();
     if (!ended) {
@@ -183,7 +180,7 @@ bool RenderJob::render_here() {
   using Clock = std::chrono::steady_clock;
   const auto& s = request_.settings;
   render::Renderer renderer(request_.scene, request_.lighting, s, envmap_);
-  auto passes = pass_schedule(s.spp);
+  auto passes = render::render_passes(s);
   const int earlier_spp = skip_done_passes(passes);
   if (earlier_spp > 0) {
     renderer.resume(*image().image, earlier_spp);
@@ -193,11 +190,15 @@ bool RenderJob::render_here() {
   set_work(tiles * s.spp, tiles * earlier_spp);
   save_record();
   const auto start = Clock::now();
-  for (const int pass : passes) {
+  int spp_done = earlier_spp;  // the passes' samples per pixel (an adaptive pass's are a mean)
+  for (const render::RenderPass& pass : passes) {
+    const auto on_tile = [this, spp = pass.spp] { add_work_done(spp); };
     if (interrupt_requested() ||
-        !renderer.render_pass(pass, cancel_flag(), [this, pass] { add_work_done(pass); }))
+        !(pass.adaptive ? renderer.render_adaptive_pass(pass.spp, cancel_flag(), on_tile)
+                        : renderer.render_pass(pass.spp, cancel_flag(), on_tile)))
       return false;
-    publish(renderer.image(), renderer.spp_done(), renderer.stats(),
+    spp_done += pass.spp;
+    publish(renderer.image(), spp_done, renderer.stats(),
             std::chrono::duration<double>(Clock::now() - start).count());
     checkpoint();
   }
@@ -300,6 +301,7 @@ void RenderJob::describe(nlohmann::json& out) const {
   out["seed"] = s.seed;
   out["mipmaps"] = s.mipmaps;
   out["normal_maps"] = s.normal_maps;
+  out["sampling"] = enum_name(s.sampling);
   out["envmap"] = request_.envmap;
   out["scene"] = request_.preset ? nlohmann::json{{"preset", *request_.preset}}
                                  : nlohmann::json{{"objects", request_.scene.objects.size()}};

@@ -1,9 +1,9 @@
 #pragma once
 // A render as a background job: builds the renderer, then renders progressive passes (1, 1, 2, 4, ...
-// samples per pixel, capped) so a valid image exists after the first pass. Progress counts pixel samples
-// per finished tile; the image and the statistics are published after every pass, and with a state
-// store the job keeps its record and image there after every pass, so a restart can continue it. Split
-// over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
+// samples per pixel, capped: render::render_passes) so a valid image exists after the first pass. Progress
+// counts pixel samples per finished tile; the image and the statistics are published after every pass, and
+// with a state store the job keeps its record and image there after every pass, so a restart can continue it.
+// Split over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
 // the image as each range is merged and keeps it every few seconds.
 #include <memory>
 #include <mutex>
@@ -12,6 +12,7 @@
 #include "api/render_request.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
+#include "engine/render/pass_schedule.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/job.hpp"
 #include "server/render_counters.hpp"
@@ -20,10 +21,6 @@
 #include "server/state_store.hpp"
 
 namespace lp::server {
-
-// Samples per pixel of each pass: 1, 1, 2, 4, ... doubling up to `max_pass`, then `max_pass` until done
-// (the last pass takes the remainder). Sums to `spp`.
-std::vector<int> pass_schedule(int spp, int max_pass = 32);
 
 struct RenderImage {
   std::shared_ptr<const Image> image;  // the mean of the finished passes; nullptr before the first
@@ -83,7 +80,7 @@ class RenderJob : public Job {
                std::vector<render::SampleRange> ranges_done = {});
   void checkpoint();
   void keep_result_memory();  // the image of the passes done, then the record naming it
-  int skip_done_passes(std::vector<int>& passes) const;
+  int skip_done_passes(std::vector<render::RenderPass>& passes) const;
 
   const api::RenderRequest request_;
   const nlohmann::json request_json_;

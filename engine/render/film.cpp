@@ -1,16 +1,38 @@
 #include "engine/render/film.hpp"
 
+#include <cmath>
+
 #include "engine/core/error.hpp"
 
 namespace lp::render {
 
 Film::Film(int width, int height)
-    : width_(width), height_(height), pass_(size_t(width) * height * 3), total_(size_t(width) * height * 3) {}
+    : width_(width),
+      height_(height),
+      pass_(size_t(width) * size_t(height) * 3),
+      pass_squares_(size_t(width) * size_t(height)),
+      squares_(size_t(width) * size_t(height)),
+      total_(size_t(width) * size_t(height) * 3),
+      count_(size_t(width) * size_t(height)) {}
 
 void Film::merge_pass(int spp) {
+  if (deviation_.empty())
+    for (size_t i = 0; i < squares_.size(); ++i) squares_[i] += pass_squares_[i];
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
-  spp_ += spp;
+  for (uint32_t& c : count_) c += uint32_t(spp);
+  samples_ += uint64_t(spp) * count_.size();
+}
+
+void Film::merge_pass(std::span<const uint32_t> counts) {
+  if (counts.size() != count_.size())
+    throw Error(ErrorKind::InvalidArgument, "film: the pass's counts do not match the film");
+  std::lock_guard lock(mutex_);
+  for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
+  for (size_t i = 0; i < count_.size(); ++i) {
+    count_[i] += counts[i];
+    samples_ += counts[i];
+  }
 }
 
 void Film::restore(const Image& mean, int spp) {
@@ -19,21 +41,49 @@ void Film::restore(const Image& mean, int spp) {
   const auto in = mean.data();
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] = double(in[i]) * spp;
-  spp_ = spp;
+  for (uint32_t& c : count_) c = uint32_t(spp);
+  samples_ = uint64_t(spp) * count_.size();
+  restored_ = true;
+}
+
+bool Film::has_deviations() const {
+  return !restored_ && (!deviation_.empty() || (!count_.empty() && count_[0] >= 2));
+}
+
+std::span<const float> Film::deviations() {
+  if (!has_deviations())
+    throw Error(ErrorKind::InvalidArgument, "film: no deviations without 2 uniform samples per pixel");
+  if (deviation_.empty()) {
+    deviation_.resize(count_.size());
+    for (size_t i = 0; i < count_.size(); ++i) {
+      const double n = count_[i], *sum = &total_[i * 3];
+      const double mean_squares = (sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]) / (n * n);
+      const double variance = (squares_[i] / n - mean_squares) * n / (n - 1);
+      deviation_[i] = float(std::sqrt(std::max(variance, 0.0)));
+    }
+  }
+  return deviation_;
 }
 
 int Film::spp() const {
   std::lock_guard lock(mutex_);
-  return spp_;
+  return count_.empty() ? 0 : int(samples_ / count_.size());
+}
+
+uint64_t Film::samples() const {
+  std::lock_guard lock(mutex_);
+  return samples_;
 }
 
 Image Film::mean() const {
   Image image(width_, height_);
-  std::lock_guard lock(mutex_);
-  if (spp_ == 0) return image;
-  const double inv = 1.0 / spp_;
   auto out = image.data();
-  for (size_t i = 0; i < total_.size(); ++i) out[i] = float(total_[i] * inv);
+  std::lock_guard lock(mutex_);
+  for (size_t i = 0; i < count_.size(); ++i) {
+    if (count_[i] == 0) continue;
+    const double inv = 1.0 / count_[i];
+    for (size_t k = i * 3; k < i * 3 + 3; ++k) out[k] = float(total_[k] * inv);
+  }
   return image;
 }
 

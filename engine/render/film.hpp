@@ -2,8 +2,15 @@
 // Per-pixel accumulation over passes: a pass writes its per-pixel sums into a staging buffer (tiles own
 // disjoint pixels, so no locking), and only a finished pass is merged into the running totals.
 // image() may be called from another thread while a pass renders.
+//
+// Each pixel has its own count of samples: a uniform pass adds the same number to every pixel, an
+// adaptive pass a number of its own to each (adaptive_allocation.hpp). A pixel's samples are always
+// the indices 0, 1, 2, ... of its sequence, so its mean is over a prefix of it. While every pass has
+// been uniform the film also sums each pixel's squared samples, from which the first adaptive pass
+// takes the pixels' deviations (kept from then on, the same for every later adaptive pass).
 #include <cstdint>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include "engine/image/image.hpp"
@@ -13,33 +20,55 @@ namespace lp::render {
 class Film {
  public:
   Film(int width, int height);
-  // The bytes a film of width x height pixels holds.
+  // The bytes a film of width x height pixels holds, with an adaptive pass's counts.
   static int64_t memory_bytes(int64_t width, int64_t height) {
-    return width * height * 3 * int64_t(sizeof(float) + sizeof(double));
+    return width * height *
+           (3 * int64_t(sizeof(float) + sizeof(double)) + int64_t(sizeof(float) + sizeof(double)) +
+            2 * int64_t(sizeof(uint32_t)) + int64_t(sizeof(float)));
   }
 
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // The staging sum of `spp` samples of one pixel in the current pass.
-  void set_pass_sum(int x, int y, Rgb sum) {
-    float* p = &pass_[(size_t(y) * width_ + x) * 3];
+  // The samples of pixel (x, y) so far: the index its next sample draws.
+  uint32_t count(int x, int y) const { return count_[size_t(y) * size_t(width_) + size_t(x)]; }
+
+  // The staging sum of the current pass's samples of one pixel, and of their squared channels.
+  void set_pass_sum(int x, int y, Rgb sum, float sum_squares) {
+    const size_t i = size_t(y) * size_t(width_) + size_t(x);
+    float* p = &pass_[i * 3];
     p[0] = sum.x, p[1] = sum.y, p[2] = sum.z;
+    pass_squares_[i] = sum_squares;
   }
-  // Adds the staged pass (of `spp` samples per pixel) to the totals.
+  // Adds the staged pass of `spp` samples per pixel to the totals.
   void merge_pass(int spp);
+  // Adds the staged pass of counts[i] samples of pixel i (row-major) to the totals.
+  void merge_pass(std::span<const uint32_t> counts);
   // Replaces the totals with those of an earlier run: its mean image over `spp` samples per pixel.
+  // Its deviations are unknown, so adaptive passes are refused afterwards.
   void restore(const Image& mean, int spp);
 
-  int spp() const;
+  // Whether deviations() can be had: no restore(), and at least 2 samples per pixel if every pass was
+  // uniform.
+  bool has_deviations() const;
+  // Each pixel's standard deviation of one sample (over its channels, sqrt of the summed variances),
+  // from the uniform passes before the first call; the same from then on. Call between passes.
+  std::span<const float> deviations();
+
+  int spp() const;  // samples per pixel: the mean count, rounded down
+  uint64_t samples() const;
   Image mean() const;
 
  private:
   int width_, height_;
-  std::vector<float> pass_;
-  mutable std::mutex mutex_;  // guards total_ and spp_
+  std::vector<float> pass_, pass_squares_;
+  std::vector<double> squares_;  // sums of squared channels while every pass is uniform
+  std::vector<float> deviation_;
+  bool restored_ = false;
+  mutable std::mutex mutex_;  // guards total_, count_ and samples_
   std::vector<double> total_;
-  int spp_ = 0;
+  std::vector<uint32_t> count_;
+  uint64_t samples_ = 0;
 };
 
 }  // namespace lp::render

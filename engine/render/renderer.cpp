@@ -16,6 +16,7 @@
 #endif
 
 #include "engine/core/error.hpp"
+#include "engine/render/adaptive_allocation.hpp"
 #include "engine/render/bsdf.hpp"
 #include "engine/render/camera.hpp"
 #include "engine/render/directional_lights.hpp"
@@ -31,6 +32,11 @@ namespace {
 
 inline constexpr int kTileSize = 16;
 inline constexpr int kPacket = EmbreeScene::kPacket;
+
+// The samples one pixel draws in a pass: n of them from index `first`.
+struct SampleRun {
+  uint32_t first = 0, n = 0;
+};
 
 std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
   std::vector<std::unique_ptr<Bsdf>> out;
@@ -103,44 +109,77 @@ struct Renderer::Impl {
     return m == LightingMode::MedianCut || m == LightingMode::MedianCutAll;
   }
 
-  // Renders `spp` samples from `first_sample` of every pixel of the tile, handing each pixel's sum to
-  // `store(x, y, sum)`. The camera rays of one sample index in a run of kPacket pixels of a row are
-  // traced as one packet: which pixels share a packet depends only on the tile, so a pass, a range of
-  // samples or another thread count traces every ray alike. Each pixel adds its samples in index order.
-  template <class Store>
-  void render_tile(int tile, uint32_t first_sample, int spp, Store&& store) {
+  // Renders the samples of every pixel of the tile: pixel (x, y) draws `runs(x, y).n` samples from
+  // index `runs(x, y).first`, and hands their sum and the sum of their squared channels to
+  // `store(x, y, sum, squares)`. The camera rays of one sample index in a run of kPacket pixels of a
+  // row are traced as one packet (of those pixels that draw that sample): which pixels share a packet
+  // depends only on the tile and the counts, so a pass, a range of samples or another thread count
+  // traces every ray alike. Each pixel adds its samples in index order.
+  template <class Runs, class Store>
+  void render_tile(int tile, Runs&& runs_of, Store&& store) {
     const FlushDenormals ftz;
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
     const int x1 = std::min(x0 + kTileSize, settings.width), y1 = std::min(y0 + kTileSize, settings.height);
-    uint64_t tile_rays = 0;
+    uint64_t tile_rays = 0, tile_samples = 0;
     for (int y = y0; y < y1; ++y) {
       for (int xs = x0; xs < x1; xs += kPacket) {
         const int n = std::min(kPacket, x1 - xs);
+        SampleRun runs[kPacket];
+        uint32_t longest = 0;
+        for (int k = 0; k < n; ++k) {
+          runs[k] = runs_of(xs + k, y);
+          longest = std::max(longest, runs[k].n);
+          tile_samples += runs[k].n;
+        }
         Rgb sums[kPacket] = {};
-        for (int i = 0; i < spp; ++i) trace_packet(xs, y, n, first_sample + uint32_t(i), sums, tile_rays);
-        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k]);
+        float squares[kPacket] = {};
+        for (uint32_t i = 0; i < longest; ++i) {
+          int lanes[kPacket], active = 0;
+          uint32_t indices[kPacket];
+          for (int k = 0; k < n; ++k)
+            if (i < runs[k].n) indices[active] = runs[k].first + i, lanes[active++] = k;
+          Rgb l[kPacket];
+          trace_packet(xs, y, {lanes, size_t(active)}, indices, l, tile_rays);
+          for (int a = 0; a < active; ++a) {
+            if (!finite(l[a])) continue;  // a numerical failure must not poison the image
+            sums[lanes[a]] += l[a];
+            squares[lanes[a]] += l[a].x * l[a].x + l[a].y * l[a].y + l[a].z * l[a].z;
+          }
+        }
+        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k], squares[k]);
       }
     }
-    samples.fetch_add(uint64_t(x1 - x0) * uint64_t(y1 - y0) * uint64_t(spp), std::memory_order_relaxed);
+    samples.fetch_add(tile_samples, std::memory_order_relaxed);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
   }
 
-  // Sample `index` of the n pixels (x, y) .. (x + n - 1, y), added to sums[0 .. n).
-  void trace_packet(int x, int y, int n, uint32_t index, Rgb* sums, uint64_t& tile_rays) const {
+  // Sample indices[a] of pixel (x + lanes[a], y) for each active lane a, its radiance into out[a].
+  void trace_packet(int x, int y, std::span<const int> lanes, const uint32_t* indices, Rgb* out,
+                    uint64_t& tile_rays) const {
     std::optional<PathSampler> samplers[kPacket];
     Ray camera_rays[kPacket];
     std::optional<SurfaceHit> hits[kPacket];
-    for (int k = 0; k < n; ++k) {
-      const uint64_t pixel = uint64_t(y) * uint64_t(settings.width) + uint64_t(x + k);
-      PathSampler& sampler = samplers[k].emplace(settings.seed, pixel, index);
+    const size_t n = lanes.size();
+    for (size_t a = 0; a < n; ++a) {
+      const int px = x + lanes[a];
+      const uint64_t pixel = uint64_t(y) * uint64_t(settings.width) + uint64_t(px);
+      PathSampler& sampler = samplers[a].emplace(settings.seed, pixel, indices[a]);
       const Point2 jitter = sampler.get_2d();
-      camera_rays[k] = camera.generate(float(x + k) + jitter.x, float(y) + jitter.y);
+      camera_rays[a] = camera.generate(float(px) + jitter.x, float(y) + jitter.y);
     }
-    geometry.intersect_packet({camera_rays, size_t(n)}, {hits, size_t(n)});
-    for (int k = 0; k < n; ++k) {
-      const Rgb l = integrator.radiance(camera_rays[k], hits[k], *samplers[k], tile_rays);
-      if (finite(l)) sums[k] += l;  // a numerical failure must not poison the image
-    }
+    geometry.intersect_packet({camera_rays, n}, {hits, n});
+    for (size_t a = 0; a < n; ++a)
+      out[a] = integrator.radiance(camera_rays[a], hits[a], *samplers[a], tile_rays);
+  }
+
+  // Renders every tile with the samples `runs(x, y)` of each pixel into the film's staging buffer.
+  template <class Runs>
+  bool render_into_film(const std::atomic<bool>& cancel, const std::function<void()>& on_tile,
+                        const Runs& runs) {
+    const auto store = [this](int x, int y, Rgb sum, float squares) {
+      film.set_pass_sum(x, y, sum, squares);
+    };
+    return for_each_tile(tiles_x * tiles_y, cancel, on_tile, [&](int t) { render_tile(t, runs, store); });
   }
 
   RenderSettings settings;
@@ -155,6 +194,8 @@ struct Renderer::Impl {
   Film film;
   int tiles_x, tiles_y;
   std::atomic<uint64_t> samples{0}, rays{0};
+  uint32_t adaptive_passes = 0;
+  bool resumed = false;
 };
 
 Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
@@ -173,13 +214,38 @@ int Renderer::tile_count() const {
 
 bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_pass: spp must be >= 1");
-  const uint32_t first = uint32_t(impl_->film.spp());
   Film& film = impl_->film;
-  const bool finished = for_each_tile(tile_count(), cancel, on_tile, [&](int t) {
-    impl_->render_tile(t, first, spp, [&film](int x, int y, Rgb sum) { film.set_pass_sum(x, y, sum); });
-  });
-  if (!finished) return false;
+  const auto runs = [&film, spp](int x, int y) { return SampleRun{film.count(x, y), uint32_t(spp)}; };
+  if (!impl_->render_into_film(cancel, on_tile, runs)) return false;
   film.merge_pass(spp);
+  return true;
+}
+
+bool Renderer::render_adaptive_pass(int spp, const std::atomic<bool>& cancel,
+                                    const std::function<void()>& on_tile) {
+  if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_adaptive_pass: spp must be >= 1");
+  if (impl_->resumed)
+    throw Error(
+        ErrorKind::InvalidArgument,
+        "render_adaptive_pass: a resumed render has no variance estimates; it continues with uniform passes");
+  Film& film = impl_->film;
+  if (!film.has_deviations()) {
+    const int warmup = std::min(spp, std::max(1, adaptive_warmup_spp(spp) - film.spp()));
+    if (!render_pass(warmup, cancel, on_tile)) return false;
+    spp -= warmup;
+    if (spp == 0) return true;
+    if (!film.has_deviations()) return render_pass(spp, cancel, on_tile);
+  }
+  const int width = impl_->settings.width;
+  const std::vector<uint32_t> counts =
+      allocate_samples(film.deviations(), width, impl_->settings.height,
+                       uint64_t(spp) * uint64_t(width) * uint64_t(impl_->settings.height),
+                       impl_->settings.seed, impl_->adaptive_passes++);
+  const auto runs = [&film, &counts, width](int x, int y) {
+    return SampleRun{film.count(x, y), counts[size_t(y) * size_t(width) + size_t(x)]};
+  };
+  if (!impl_->render_into_film(cancel, on_tile, runs)) return false;
+  film.merge_pass(counts);
   return true;
 }
 
@@ -188,12 +254,12 @@ std::optional<RangePartial> Renderer::render_range(SampleRange range, const std:
   if (range.end <= range.first) throw Error(ErrorKind::InvalidArgument, "render_range: an empty range");
   const uint64_t rays_before = impl_->rays.load();
   RangePartial out{range, 0, PartialFilm(impl_->settings.width, impl_->settings.height)};
-  const auto store = [&out, range](int x, int y, Rgb sum) {
+  const auto runs = [range](int, int) { return SampleRun{range.first, uint32_t(range.count())}; };
+  const auto store = [&out, range](int x, int y, Rgb sum, float) {
     out.film.add(x, y, sum, uint32_t(range.count()));
   };
-  const bool finished = for_each_tile(tile_count(), cancel, on_tile, [&](int t) {
-    impl_->render_tile(t, range.first, range.count(), store);
-  });
+  const bool finished =
+      for_each_tile(tile_count(), cancel, on_tile, [&](int t) { impl_->render_tile(t, runs, store); });
   if (!finished) return std::nullopt;
   out.rays = impl_->rays.load() - rays_before;
   return out;
@@ -201,6 +267,7 @@ std::optional<RangePartial> Renderer::render_range(SampleRange range, const std:
 
 void Renderer::resume(const Image& mean, int spp) {
   impl_->film.restore(mean, spp);
+  impl_->resumed = true;
 }
 
 int Renderer::spp_done() const {

@@ -16,7 +16,7 @@
 namespace lp::render {
 
 struct RenderStats {
-  uint64_t samples = 0;  // camera samples (pixel samples) traced so far
+  uint64_t samples = 0;  // camera samples (pixel samples) traced so far, over all pixels
   uint64_t rays = 0;     // all rays traced (camera, bounce, shadow)
 };
 
@@ -31,13 +31,24 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   int tile_count() const;
-  // Adds `spp` samples per pixel. Runs in parallel (oneTBB) in the caller's task arena; calls
-  // `on_tile` after each finished tile (from worker threads). Returns false if `cancel` became true
-  // (the pass is then incomplete and not added to the image).
+  // Adds `spp` samples per pixel (each pixel continues its own sequence of samples). Runs in parallel
+  // (oneTBB) in the caller's task arena; calls `on_tile` after each finished tile (from worker
+  // threads). Returns false if `cancel` became true (the pass is then incomplete and not added to the
+  // image).
   bool render_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
 
+  // Adaptive sampling: adds spp x width x height samples in all, shared among the pixels in
+  // proportion to their neighbours' standard deviations (adaptive_allocation.hpp: the rule, and why a
+  // pixel's count never reads its own samples, which keeps every pixel's mean unbiased). A render
+  // whose passes gave fewer than 2 samples per pixel first spends a uniform warm-up
+  // (adaptive_warmup_spp, part of the `spp`); the deviations are measured on the uniform samples
+  // before the first adaptive pass and kept. Uniform and adaptive passes mix freely. Cancelled as
+  // render_pass (a finished warm-up stays in the image). Throws InvalidArgument after resume(): a
+  // restored mean image has no deviations. render_range() and resume() are uniform only.
+  bool render_adaptive_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
+
   // Renders the samples [range.first, range.end) of every pixel into a partial film of their own (the
-  // image and spp_done() stay as they are): the samples a run of passes draws at those indices, so
+  // image and spp_done() stay as they are): the samples a run of uniform passes draws at those indices, so
   // partials of a render's ranges merge into its image. May run while no pass runs; not concurrently
   // with another range. nullopt if `cancel` became true (checked per tile). rays counts this range's
   // rays only when no other range or pass runs meanwhile.
@@ -48,8 +59,8 @@ class Renderer {
   // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.
   void resume(const Image& mean, int spp);
 
-  int spp_done() const;
-  Image image() const;  // mean of the finished passes (linear radiance)
+  int spp_done() const;  // samples per pixel so far (their mean, rounded down, after adaptive passes)
+  Image image() const;   // mean of the finished passes (linear radiance)
   RenderStats stats() const;
 
  private:

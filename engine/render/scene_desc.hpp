@@ -125,9 +125,18 @@ struct MeshLimits {
   int64_t max_file_bytes = limits::kMaxMeshFileBytes;
 };
 
+// How a render shares its samples among pixels: the same number everywhere, or in proportion to each
+// pixel's noise (Renderer::render_adaptive_pass), `spp` being the mean.
+enum class SamplingMode { Uniform, Adaptive };
+constexpr auto enum_entries(SamplingMode) {
+  return std::to_array<EnumEntry<SamplingMode>>(
+      {{SamplingMode::Uniform, "uniform"}, {SamplingMode::Adaptive, "adaptive"}});
+}
+
 struct RenderSettings {
   int width = 256, height = 256;
-  int spp = 64;
+  int spp = 64;  // samples per pixel; their mean over the pixels with adaptive sampling
+  SamplingMode sampling = SamplingMode::Uniform;
   int max_depth = 8;  // bounces: 0 = only what the camera sees directly, 1 = direct lighting, ...
   uint64_t seed = 1;
   MeshLimits mesh_limits;

@@ -56,6 +56,26 @@ TEST(CliRender, AWhiteFurnaceRendersItsAnalyticValue) {
   EXPECT_NEAR(image.at(0, 0).y, 1.0, 1e-6);
 }
 
+// --sampling adaptive: spp is the mean, and the furnace keeps its value; the progress bar covers the
+// warm-up and the adaptive pass.
+TEST(CliRender, AnAdaptiveFurnaceRendersItsAnalyticValue) {
+  const test::TempDir dir;
+  write_white_map(dir.path());
+  write_text(dir.path() / "furnace.json",
+             R"({"envmap":"white.pfm","scene":{"preset":"furnace"},"width":32,"height":32,"spp":32})");
+  const test::CliRun run =
+      test::run_cli({"render", "furnace.json", "--sampling", "adaptive", "-o", "furnace.exr"}, dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  EXPECT_TRUE(run.err.ends_with("] 100%\n")) << run.err;
+  const Image image = read_image_file(dir.path() / "furnace.exr").image;
+  ASSERT_EQ(image.width(), 32);
+  double centre = 0;
+  for (int y = 14; y < 18; ++y)
+    for (int x = 14; x < 18; ++x) centre += image.at(x, y).x / 16.0;
+  EXPECT_NEAR(centre, 0.5, 0.02);
+  EXPECT_NEAR(image.at(0, 0).y, 1.0, 1e-6);
+}
+
 TEST(CliRender, ShowsAProgressBarUnlessQuiet) {
   const test::TempDir dir;
   write_text(dir.path() / "scene.json", R"({"envmap":"default","width":32,"height":16,"spp":1})");
@@ -132,6 +152,7 @@ TEST(CliRender, BadScenesFailAsTheApiAnswersThem) {
            R"({"envmap":"default","scene":{"objects":[{"type":"sphere","radius":1}]}})",
            R"({"envmap":"default","lighting":{"mode":"sun"}})",
            R"({"envmap":"default","colour":"red"})",
+           R"({"envmap":"default","sampling":"auto"})",
            R"({"scene":{}})",
            R"([1,2])",
        }) {

@@ -248,6 +248,14 @@ TEST(RenderRequest, MipmapsAndNormalMapsTurnOffEachAlone) {
   expect_field_error(R"({"envmap":"e","normal_maps":0})", "normal_maps");
 }
 
+TEST(RenderRequest, SamplingIsUniformUnlessAdaptiveIsAsked) {
+  EXPECT_EQ(parse(R"({"envmap":"e"})").settings.sampling, SamplingMode::Uniform);
+  EXPECT_EQ(parse(R"({"envmap":"e","sampling":"adaptive"})").settings.sampling, SamplingMode::Adaptive);
+  EXPECT_EQ(parse(R"({"envmap":"e","sampling":"uniform"})").settings.sampling, SamplingMode::Uniform);
+  expect_field_error(R"({"envmap":"e","sampling":"auto"})", "sampling");
+  expect_field_error(R"({"envmap":"e","sampling":true})", "sampling");
+}
+
 TEST(RenderRequest, AnEmptyObjectListIsAValidScene) {
   const auto r = parse(R"({"envmap":"e","scene":{"objects":[]}})");
   EXPECT_FALSE(r.preset);

@@ -154,10 +154,16 @@ test('a small render streams its progress to done and shows its image', async ()
   const job = await (await fetch(`${server.base}/api/v1/renders/${id}`)).json();
   assert.equal(job.status, 'done');
   assert.equal(job.spp_done, 4);
+  assert.equal(job.sampling, 'uniform');
   // The page followed the job through its event stream (the server logs it when the stream ends).
   await eventually('the events stream in the server log', () => server.log.join('').includes(`GET /api/v1/renders/${id}/events 200`));
   await page.locator(`#render-jobs tr[data-id="${id}"][data-status=done]`).waitFor();
   assert.ok(await page.locator('#renders-panel .error').isHidden());
+
+  const adaptive = await renderSphere(page, { width: 32, height: 32, spp: 8, sampling: 'adaptive' });
+  const adaptiveJob = await (await fetch(`${server.base}/api/v1/renders/${adaptive}`)).json();
+  assert.deepEqual([adaptiveJob.status, adaptiveJob.spp_done, adaptiveJob.sampling], ['done', 8, 'adaptive']);
+  await page.locator('#render-form [name=sampling]').selectOption('uniform');
 });
 
 async function finished(id) {

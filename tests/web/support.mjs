@@ -163,10 +163,11 @@ export async function prefilterChain(page, { format = 'ktx2', status = 'done', .
 export const isRenderPost = (request) => request.method() === 'POST' && new URL(request.url()).pathname === '/api/v1/renders';
 
 // A small render of the sphere through the render panel, followed to `status` (done by default).
-export async function renderSphere(page, { width = 32, height = 32, spp = 4, status = 'done' } = {}) {
+export async function renderSphere(page, { width = 32, height = 32, spp = 4, sampling = 'uniform', status = 'done' } = {}) {
   const form = page.locator('#render-form');
   await form.locator('[name=preset]').selectOption('sphere');
   await form.locator('[name=compare]').selectOption('');
+  await form.locator('[name=sampling]').selectOption(sampling);
   await form.locator('[name=width]').fill(String(width));
   await form.locator('[name=height]').fill(String(height));
   await form.locator('[name=spp]').fill(String(spp));

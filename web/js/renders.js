@@ -142,7 +142,7 @@ async function submit(event) {
   const lighting = { mode: v.mode, rotation_deg: v.rotation_deg, intensity: v.intensity, visible: v.visible };
   if (v.mode.startsWith('median_cut')) lighting.lights = v.lights;
   const body = { envmap: state.map, scene: sceneOf(v.preset), lighting, width: v.width, height: v.height, spp: v.spp,
-    max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps };
+    sampling: v.sampling, max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps };
   if (v.compare) {
     await busy(panel(), () => compareRenders($('#render-compare'), body, v.compare, exposure()));
     refreshJobs();
