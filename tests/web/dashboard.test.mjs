@@ -251,14 +251,14 @@ test('a value out of range is refused beside its field: by the browser before se
 });
 
 // Both figures of the side-by-side view end done with a 48-pixel-wide image (saved as PNG and EXR
-// by its links) and a caption naming the option's state and the render time; the two newest jobs are
-// the request with the option on and off.
-async function expectComparison(option, label) {
-  for (const on of ['true', 'false']) {
-    const figure = page.locator(`#render-compare figure[data-option=${option}][data-on=${on}]`);
+// by its links) and a caption naming the option's value and the render time; the two newest jobs are
+// the request with the option each way ([value, its name in the caption]).
+async function expectComparison(option, label, sides = [[true, 'on'], [false, 'off']]) {
+  for (const [value, name] of sides) {
+    const figure = page.locator(`#render-compare figure[data-option=${option}][data-on=${value}]`);
     await figure.and(page.locator('[data-status=done]')).waitFor({ timeout: 45000 });
-    await waitForImage(page, `#render-compare figure[data-on=${on}] img`, 48);
-    assert.match(await figure.locator('figcaption').innerText(), new RegExp(`^${label} ${on === 'true' ? 'on' : 'off'} · done · [0-9.e-]+ s$`));
+    await waitForImage(page, `#render-compare figure[data-on=${value}] img`, 48);
+    assert.match(await figure.locator('figcaption').innerText(), new RegExp(`^${label} ${name} · done · [0-9.e-]+ s$`));
     const png = await download(page, figure.locator('.downloads [data-format=png]'));
     assert.match(png.name, /^render-[0-9a-f]{16}\.png$/);
     assert.deepEqual(pngSize(png.bytes), [48, 32]);
@@ -266,11 +266,11 @@ async function expectComparison(option, label) {
   }
   const { renders } = await (await fetch(`${server.base}/api/v1/renders`)).json();
   const [first, second] = renders.slice(-2);
-  assert.deepEqual([first[option], second[option], first.status, second.status], [true, false, 'done', 'done']);
+  assert.deepEqual([first[option], second[option], first.status, second.status], [sides[0][0], sides[1][0], 'done', 'done']);
   return [first, second];
 }
 
-test('two renders side by side: the textured preset with mipmaps on and off, an uploaded model with normal maps on and off', async () => {
+test('two renders side by side: the textured preset with mipmaps on and off, an uploaded model with normal maps on and off, the sphere sampled adaptively and uniformly', async () => {
   const upload = await fetch(`${server.base}/api/v1/assets?name=box`, { method: 'POST', body: readFileSync(boxGlb) });
   assert.equal(upload.status, 201, await upload.text());
   const form = page.locator('#render-form');
@@ -292,9 +292,16 @@ test('two renders side by side: the textured preset with mipmaps on and off, an 
   assert.deepEqual(box.map((j) => j.scene.objects), [1, 1]);
   assert.ok(await page.locator('#renders-panel .error').isHidden());
 
+  // Uniform and adaptive sampling at the same mean spp.
+  await form.locator('[name=preset]').selectOption('sphere');
+  await form.locator('[name=spp]').fill('8');
+  await form.locator('[name=compare]').selectOption('sampling');
+  await page.locator('#render-submit').click();
+  const sampling = await expectComparison('sampling', 'sampling', [['adaptive', 'adaptive'], ['uniform', 'uniform']]);
+  assert.deepEqual(sampling.map((j) => j.spp_done), [8, 8]);
+
   // Back to one render of the sphere for the next test.
   await form.locator('[name=compare]').selectOption('');
-  await form.locator('[name=preset]').selectOption('sphere');
 });
 
 test('a long render shows its passes while running and can be cancelled', async () => {

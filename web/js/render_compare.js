@@ -1,11 +1,16 @@
-// Two renders side by side: the same request with one option (mipmaps or normal maps) on and off,
-// each followed to its end and shown with its render time.
+// Two renders side by side: the same request with one option two ways (mipmaps or normal maps on and
+// off, uniform or adaptive sampling), each followed to its end and shown with its render time.
 import { api, apiUrl, loadImage } from './api.js';
 import { $, el, num } from './dom.js';
 import { offerLinks } from './downloads.js';
 import { ACTIVE } from './jobs.js';
 
-const LABELS = { mipmaps: 'mipmaps', normal_maps: 'normal maps' };
+// Each option's label and its two values, with how a caption names them.
+const OPTIONS = {
+  mipmaps: { label: 'mipmaps', sides: [[true, 'on'], [false, 'off']] },
+  normal_maps: { label: 'normal maps', sides: [[true, 'on'], [false, 'off']] },
+  sampling: { label: 'sampling', sides: [['adaptive', 'adaptive'], ['uniform', 'uniform']] },
+};
 
 let comparison = 0; // the latest comparison; an older one stops updating the page
 
@@ -33,19 +38,19 @@ async function follow(job, figure, label, current, exposure) {
   if (job.error) caption.textContent += ` · ${job.error.code}: ${job.error.message}`;
 }
 
-// Submits `body` with `option` true and false and, once both are accepted, shows both renders in
+// Submits `body` with `option` each of its two ways and, once both are accepted, shows both renders in
 // `box`. Resolves once both have ended; rejects with the API's error.
 export async function compareRenders(box, body, option, exposure) {
   const mine = ++comparison;
   const current = () => mine === comparison;
-  const sides = [true, false].map((on) => {
-    const label = `${LABELS[option]} ${on ? 'on' : 'off'}`;
-    const figure = el('figure', { dataset: { option, on: String(on) } },
+  const sides = OPTIONS[option].sides.map(([value, name]) => {
+    const label = `${OPTIONS[option].label} ${name}`;
+    const figure = el('figure', { dataset: { option, on: String(value) } },
       el('img', { alt: label }), el('figcaption', {}, label), el('div', { class: 'downloads', hidden: '' }));
-    return { on, label, figure };
+    return { value, label, figure };
   });
   const jobs = [];
-  for (const s of sides) jobs.push(await api('/renders', { method: 'POST', json: { ...body, [option]: s.on } }));
+  for (const s of sides) jobs.push(await api('/renders', { method: 'POST', json: { ...body, [option]: s.value } }));
   if (!current()) return jobs;
   box.replaceChildren(...sides.map((s) => s.figure));
   box.hidden = false;
