@@ -13,6 +13,7 @@
 #include "cli/output.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/scene_file.hpp"
+#include "engine/render/pass_schedule.hpp"
 #include "engine/render/renderer.hpp"
 
 namespace lp::cli {
@@ -52,13 +53,14 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
 Image render(const SceneRender& scene, bool progress) {
   const auto& r = scene.request;
   render::Renderer renderer(r.scene, r.lighting, r.settings, scene.envmap);
-  // One pass; an adaptive one renders its uniform warm-up over the tiles first, then the rest.
-  const bool adaptive = r.settings.sampling == render::SamplingMode::Adaptive;
-  ProgressBar bar("render", renderer.tile_count() * (adaptive ? 2 : 1), progress);
+  // The passes a job runs (an adaptive render's uniform warm-up first), each up to all of the spp.
+  ProgressBar bar("render", int64_t(renderer.tile_count()) * r.settings.spp, progress);
   const std::atomic<bool> never{false};
-  const auto on_tile = [&bar] { bar.advance(1); };
-  adaptive ? renderer.render_adaptive_pass(r.settings.spp, never, on_tile)
-           : renderer.render_pass(r.settings.spp, never, on_tile);
+  for (const render::RenderPass& pass : render::render_passes(r.settings, r.settings.spp)) {
+    const auto on_tile = [&bar, spp = pass.spp] { bar.advance(spp); };
+    pass.adaptive ? renderer.render_adaptive_pass(pass.spp, never, on_tile)
+                  : renderer.render_pass(pass.spp, never, on_tile);
+  }
   bar.finish();
   return renderer.image();
 }

@@ -51,6 +51,8 @@ class Film {
   // Whether deviations() can be had: no restore(), and at least 2 samples per pixel if every pass was
   // uniform.
   bool has_deviations() const;
+  // Whether restore() set the totals (an earlier run's mean, without its deviations).
+  bool restored() const { return restored_; }
   // Each pixel's standard deviation of one sample (over its channels, sqrt of the summed variances),
   // from the uniform passes before the first call; the same from then on. Call between passes.
   std::span<const float> deviations();

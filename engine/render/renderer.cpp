@@ -195,7 +195,6 @@ struct Renderer::Impl {
   int tiles_x, tiles_y;
   std::atomic<uint64_t> samples{0}, rays{0};
   uint32_t adaptive_passes = 0;
-  bool resumed = false;
 };
 
 Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
@@ -224,17 +223,16 @@ bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::
 bool Renderer::render_adaptive_pass(int spp, const std::atomic<bool>& cancel,
                                     const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_adaptive_pass: spp must be >= 1");
-  if (impl_->resumed)
+  Film& film = impl_->film;
+  if (film.restored())
     throw Error(
         ErrorKind::InvalidArgument,
         "render_adaptive_pass: a resumed render has no variance estimates; it continues with uniform passes");
-  Film& film = impl_->film;
-  if (!film.has_deviations()) {
+  if (!film.has_deviations()) {  // the warm-up leaves at least 2 samples in every pixel, or no spp
     const int warmup = std::min(spp, std::max(1, adaptive_warmup_spp(spp) - film.spp()));
     if (!render_pass(warmup, cancel, on_tile)) return false;
     spp -= warmup;
     if (spp == 0) return true;
-    if (!film.has_deviations()) return render_pass(spp, cancel, on_tile);
   }
   const int width = impl_->settings.width;
   const std::vector<uint32_t> counts =
@@ -267,7 +265,6 @@ std::optional<RangePartial> Renderer::render_range(SampleRange range, const std:
 
 void Renderer::resume(const Image& mean, int spp) {
   impl_->film.restore(mean, spp);
-  impl_->resumed = true;
 }
 
 int Renderer::spp_done() const {

@@ -255,9 +255,9 @@ test('a value out of range is refused beside its field: by the browser before se
 // the request with the option each way ([value, its name in the caption]).
 async function expectComparison(option, label, sides = [[true, 'on'], [false, 'off']]) {
   for (const [value, name] of sides) {
-    const figure = page.locator(`#render-compare figure[data-option=${option}][data-on=${value}]`);
+    const figure = page.locator(`#render-compare figure[data-option=${option}][data-value=${value}]`);
     await figure.and(page.locator('[data-status=done]')).waitFor({ timeout: 45000 });
-    await waitForImage(page, `#render-compare figure[data-on=${value}] img`, 48);
+    await waitForImage(page, `#render-compare figure[data-value=${value}] img`, 48);
     assert.match(await figure.locator('figcaption').innerText(), new RegExp(`^${label} ${name} · done · [0-9.e-]+ s$`));
     const png = await download(page, figure.locator('.downloads [data-format=png]'));
     assert.match(png.name, /^render-[0-9a-f]{16}\.png$/);

@@ -41,7 +41,7 @@ async function fillPage() {
   await form.locator('[name=height]').fill('64');
   await form.locator('[name=spp]').fill('1');
   await page.locator('#render-submit').click();
-  for (const on of [true, false]) await page.locator(`#render-compare figure[data-on=${on}][data-status=done]`).waitFor({ timeout: 45000 });
+  for (const on of [true, false]) await page.locator(`#render-compare figure[data-value=${on}][data-status=done]`).waitFor({ timeout: 45000 });
   await page.locator(`#render-jobs tr[data-id="${running}"] button`, { hasText: 'Cancel' }).waitFor();
   await page.locator('#sampling-form [name=count]').fill('0');
   await page.locator('#sampling-form [aria-invalid]').waitFor();

@@ -45,7 +45,7 @@ export async function compareRenders(box, body, option, exposure) {
   const current = () => mine === comparison;
   const sides = OPTIONS[option].sides.map(([value, name]) => {
     const label = `${OPTIONS[option].label} ${name}`;
-    const figure = el('figure', { dataset: { option, on: String(value) } },
+    const figure = el('figure', { dataset: { option, value: String(value) } },
       el('img', { alt: label }), el('figcaption', {}, label), el('div', { class: 'downloads', hidden: '' }));
     return { value, label, figure };
   });
