@@ -1,6 +1,7 @@
 #include "engine/render/integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/render/model_shading.hpp"
 #include "engine/render/warp.hpp"
@@ -10,9 +11,14 @@ namespace {
 
 inline constexpr int kRouletteDepth = 3;
 
-float power_heuristic(float a, float b) {
-  const float a2 = a * a, b2 = b * b;
-  return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0f;
+// The MIS weight of a sample drawn with pdf a against another strategy's pdf b: Veach's power heuristic,
+// a^k / (a^k + b^k), with k = 1.5 rather than his usual 2. Between the balance heuristic (k = 1), for
+// which a compensated light distribution is the optimal one (Karlik et al. 2019), and k = 2, which wins
+// where one strategy alone is the better one; at equal samples it lowered the squared error on every
+// scene and map measured (bench/README.md, "The MIS weight").
+float mis_weight(float a, float b) {
+  const float ak = a * std::sqrt(a), bk = b * std::sqrt(b);
+  return ak + bk > 0 ? ak / (ak + bk) : 0.0f;
 }
 
 bool is_black(Rgb c) {
@@ -115,9 +121,9 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
     case LightingMode::Bsdf:
       return seen;
     case LightingMode::EnvMap:
-      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, env_choice * env_.importance_pdf(pixel));
+      return last_delta ? seen : seen * mis_weight(bsdf_pdf, env_choice * env_.importance_pdf(pixel));
     case LightingMode::Uniform:
-      return last_delta ? seen : seen * power_heuristic(bsdf_pdf, kUniformSpherePdf);
+      return last_delta ? seen : seen * mis_weight(bsdf_pdf, kUniformSpherePdf);
     case LightingMode::MedianCut:
     case LightingMode::MedianCutAll:
       return delta_chain ? seen : Rgb{};
@@ -128,7 +134,7 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
 Rgb Integrator::escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const {
   if (!sun_->contains(direction)) return {};
   if (depth == 0) return config_.env_visible ? sun_->radiance() : Rgb{};
-  return last_delta ? sun_->radiance() : sun_->radiance() * power_heuristic(bsdf_pdf, choice * sun_->pdf());
+  return last_delta ? sun_->radiance() : sun_->radiance() * mis_weight(bsdf_pdf, choice * sun_->pdf());
 }
 
 Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, float sun_choice,
@@ -164,7 +170,7 @@ Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float lig
   const Vec3 wi = s.frame.to_local(light.direction);
   const Rgb f = s.bsdf.eval(s.wo, wi);
   if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
-  const float weight = power_heuristic(light_pdf, s.bsdf.pdf(s.wo, wi));
+  const float weight = mis_weight(light_pdf, s.bsdf.pdf(s.wo, wi));
   return f * light.radiance * (weight / light_pdf);
 }
 

@@ -2,9 +2,9 @@
 // Unidirectional path tracing with next-event estimation. The light is the environment map, sampled
 // per the lighting mode:
 //   envmap:  importance sampling of the map (MIS-compensated, env_light.hpp), combined with BSDF
-//            sampling by MIS (power heuristic); with a sun taken out of the map (sun_light.hpp), the
-//            sun is sampled too at every bounce, its own MIS against BSDF sampling, and the map is its
-//            residual;
+//            sampling by MIS (power heuristic, exponent 1.5); with a sun taken out of the map
+//            (sun_light.hpp), the sun is sampled too at every bounce, its own MIS against BSDF
+//            sampling, and the map is its residual;
 //   uniform: uniform sphere sampling, with MIS;
 //   bsdf:    no light sampling, paths count the map when they escape;
 //   median_cut / median_cut_all: directional lights from median cut, one picked per shading point
