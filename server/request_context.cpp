@@ -1,5 +1,7 @@
 #include "server/request_context.hpp"
 
+#include <atomic>
+
 namespace lp::server {
 
 RequestContext& current_request() {
@@ -9,7 +11,9 @@ RequestContext& current_request() {
 
 void begin_request_context(std::string accept_encoding) {
   RequestContext& r = current_request();
+  static std::atomic<uint64_t> arrivals{0};
   r.start = std::chrono::steady_clock::now();
+  r.arrival = arrivals.fetch_add(1, std::memory_order_relaxed);
   r.id.clear();
   r.route.clear();
   r.accept_encoding = std::move(accept_encoding);

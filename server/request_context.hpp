@@ -5,6 +5,7 @@
 // the responses, the access log and the metrics read it. A request is handled from start to end on one
 // thread (http_transport.hpp).
 #include <chrono>
+#include <cstdint>
 #include <string>
 
 #include "server/conditional_get.hpp"
@@ -13,8 +14,9 @@ namespace lp::server {
 
 struct RequestContext {
   std::chrono::steady_clock::time_point start;
-  std::string id;     // its X-Request-Id (request_id.hpp)
-  std::string route;  // the OpenAPI path of the route that answered it; empty if none did
+  uint64_t arrival = 0;  // the request's number, counted from 0 in the order requests begin in the process
+  std::string id;        // its X-Request-Id (request_id.hpp)
+  std::string route;     // the OpenAPI path of the route that answered it; empty if none did
   std::string accept_encoding;
   Caching caching = Caching::None;  // the route's
   std::string if_none_match;        // the request's If-None-Match, on a route with a Caching
