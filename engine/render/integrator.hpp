@@ -10,7 +10,7 @@
 //   median_cut / median_cut_all: directional lights from median cut, one picked per shading point
 //            (pdf 1/n) or all of them. The map itself then lights nothing: it is only seen by the
 //            camera and through chains of delta (mirror, glass) bounces.
-// Russian roulette after three bounces; `max_depth` bounces at most.
+// Russian roulette from the fifth bounce on; `max_depth` bounces at most.
 #include <cstdint>
 #include <memory>
 #include <optional>
