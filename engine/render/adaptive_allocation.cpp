@@ -11,13 +11,13 @@ namespace {
 
 __extension__ typedef unsigned __int128 Sum;
 
-// Deviations in fixed point (units of 2^-16, saturating at 2^40), so that sums are exact.
-uint64_t fixed_point(float sigma) {
-  if (!(sigma > 0)) return 0;
-  return uint64_t(std::min(double(sigma), 0x1p40) * 0x1p16);
+// Weights in fixed point (units of 2^-16, saturating at 2^40), so that sums are exact.
+uint64_t fixed_point(float weight) {
+  if (!(weight > 0)) return 0;
+  return uint64_t(std::min(double(weight), 0x1p40) * 0x1p16);
 }
 
-// The largest and the second largest deviation around one pixel (itself left out), and where the
+// The largest and the second largest weight around one pixel (itself left out), and where the
 // largest is: without pixel `argmax` the weight is `second`, without any other pixel `first`.
 struct Neighbourhood {
   uint64_t first = 0, second = 0;
@@ -52,17 +52,25 @@ std::vector<Neighbourhood> neighbourhoods(const std::vector<uint64_t>& q, int wi
 
 }  // namespace
 
+std::vector<float> allocation_weights(std::span<const float> sigma, std::span<const float> cost) {
+  if (sigma.size() != cost.size())
+    throw Error(ErrorKind::InvalidArgument, "allocation_weights: the deviations and costs differ in size");
+  std::vector<float> w(sigma.size());
+  for (size_t i = 0; i < w.size(); ++i) w[i] = sigma[i] / std::sqrt(std::max(cost[i], 1.0f));
+  return w;
+}
+
 int adaptive_warmup_spp(int spp) {
   return std::min(spp, std::max(spp / 4, 2));
 }
 
-std::vector<uint32_t> allocate_samples(std::span<const float> sigma, int width, int height, uint64_t budget,
+std::vector<uint32_t> allocate_samples(std::span<const float> weight, int width, int height, uint64_t budget,
                                        uint64_t seed, uint32_t pass, const AdaptiveRule& rule) {
   const size_t pixels = size_t(width) * size_t(height);
-  if (width < 1 || height < 1 || sigma.size() != pixels)
-    throw Error(ErrorKind::InvalidArgument, "allocate_samples: the deviations do not match the image");
+  if (width < 1 || height < 1 || weight.size() != pixels)
+    throw Error(ErrorKind::InvalidArgument, "allocate_samples: the weights do not match the image");
   std::vector<uint64_t> q(pixels);
-  for (size_t i = 0; i < pixels; ++i) q[i] = fixed_point(sigma[i]);
+  for (size_t i = 0; i < pixels; ++i) q[i] = fixed_point(weight[i]);
   const std::vector<Neighbourhood> hood = neighbourhoods(q, width, height);
   Sum total = 0;
   for (const Neighbourhood& n : hood) total += n.first;
@@ -74,7 +82,7 @@ std::vector<uint32_t> allocate_samples(std::span<const float> sigma, int width, 
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const int64_t i = int64_t(y) * width + x;
-      Sum without_i = total;  // the total as if pixel i had no deviation
+      Sum without_i = total;  // the total as if pixel i had weight 0
       for_each_neighbour(x, y, width, height, [&](int64_t k) {
         const Neighbourhood& n = hood[size_t(k)];
         if (n.argmax == i) without_i -= n.first - n.second;

@@ -1,16 +1,20 @@
 #pragma once
 // How an adaptive pass shares its samples among pixels. The relative RMSE of an image sums the pixels'
-// variances sigma_i^2 / n_i, which a fixed total sum_i n_i makes smallest with n_i proportional to
-// sigma_i, the standard deviation of one sample of pixel i.
+// variances sigma_i^2 / n_i, where sigma_i is the standard deviation of one sample of pixel i. A sample
+// of pixel i costs c_i (its rays: a pixel of glass or of a glossy wall traces longer paths than one of
+// the ground), so for a fixed time sum_i c_i n_i the error is smallest with n_i proportional to
+// sigma_i / sqrt(c_i): a fixed count sum_i n_i would take n_i proportional to sigma_i, which spends the
+// time on costly pixels where it buys the least.
 //
 // A pixel's mean over n of its samples is unbiased only if n does not depend on those samples: a pixel
 // that drew a bright sample would otherwise get more samples and be pulled back down. So no pixel's
-// count reads its own deviation: pixel i's weight s_i is the largest deviation among the 3 x 3 pixels
-// around it, itself left out, and the weights are normalised by a total that leaves pixel i out too
-// (the sum of every pixel's weight computed as if pixel i had no deviation), summed exactly in fixed
-// point so that not even a rounding of the total depends on pixel i. The deviations come from a uniform
-// warm-up, the same number of samples in every pixel, so a neighbour's deviation does not depend on
-// pixel i's samples through the neighbour's own count either.
+// count reads its own samples: a pixel's weight sigma / sqrt(c) is its own, but pixel i's share s_i is
+// the largest weight among the 3 x 3 pixels around it, itself left out, and the shares are normalised
+// by a total that leaves pixel i out too (the sum of every pixel's share computed as if pixel i had
+// weight 0), summed exactly in fixed
+// point so that not even a rounding of the total depends on pixel i. The deviations and costs come from
+// a uniform warm-up, the same number of samples in every pixel, so a neighbour's weight does not depend
+// on pixel i's samples through the neighbour's own count either.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -31,11 +35,15 @@ struct AdaptiveRule {
 // the squared error by 8%, a quarter by 63%.
 int adaptive_warmup_spp(int spp);
 
+// Each pixel's weight: its deviation `sigma` over the square root of its `cost`, the rays one of its
+// samples traced on average (at least 1: every sample traces its camera ray).
+std::vector<float> allocation_weights(std::span<const float> sigma, std::span<const float> cost);
+
 // The samples each pixel (row-major, width x height) draws in an adaptive pass of `budget` samples in
-// all, given every pixel's deviation `sigma`. The counts are rounded stochastically, by a hash of
-// (seed, pass, pixel), so that they sum to `budget` in expectation; when no neighbourhood has any
-// deviation every pixel gets the mean.
-std::vector<uint32_t> allocate_samples(std::span<const float> sigma, int width, int height, uint64_t budget,
+// all, given every pixel's `weight` (allocation_weights). The counts are rounded stochastically, by a
+// hash of (seed, pass, pixel), so that they sum to `budget` in expectation; when no neighbourhood has
+// any weight every pixel gets the mean.
+std::vector<uint32_t> allocate_samples(std::span<const float> weight, int width, int height, uint64_t budget,
                                        uint64_t seed, uint32_t pass, const AdaptiveRule& rule = {});
 
 }  // namespace lp::render

@@ -11,13 +11,18 @@ Film::Film(int width, int height)
       height_(height),
       pass_(size_t(width) * size_t(height) * 3),
       pass_squares_(size_t(width) * size_t(height)),
+      pass_rays_(size_t(width) * size_t(height)),
       squares_(size_t(width) * size_t(height)),
+      rays_(size_t(width) * size_t(height)),
       total_(size_t(width) * size_t(height) * 3),
       count_(size_t(width) * size_t(height)) {}
 
 void Film::merge_pass(int spp) {
   if (deviation_.empty())
-    for (size_t i = 0; i < squares_.size(); ++i) squares_[i] += pass_squares_[i];
+    for (size_t i = 0; i < squares_.size(); ++i) {
+      squares_[i] += pass_squares_[i];
+      rays_[i] += pass_rays_[i];
+    }
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
   for (uint32_t& c : count_) c += uint32_t(spp);
@@ -61,8 +66,15 @@ std::span<const float> Film::deviations() {
       const double variance = (squares_[i] / n - mean_squares) * n / (n - 1);
       deviation_[i] = float(std::sqrt(std::max(variance, 0.0)));
     }
+    cost_.resize(count_.size());
+    for (size_t i = 0; i < count_.size(); ++i) cost_[i] = float(double(rays_[i]) / count_[i]);
   }
   return deviation_;
+}
+
+std::span<const float> Film::costs() {
+  deviations();
+  return cost_;
 }
 
 int Film::spp() const {

@@ -6,8 +6,9 @@
 // Each pixel has its own count of samples: a uniform pass adds the same number to every pixel, an
 // adaptive pass a number of its own to each (adaptive_allocation.hpp). A pixel's samples are always
 // the indices 0, 1, 2, ... of its sequence, so its mean is over a prefix of it. While every pass has
-// been uniform the film also sums each pixel's squared samples, from which the first adaptive pass
-// takes the pixels' deviations (kept from then on, the same for every later adaptive pass).
+// been uniform the film also sums each pixel's squared samples and the rays its samples traced, from
+// which the first adaptive pass takes the pixels' deviations and costs (kept from then on, the same
+// for every later adaptive pass).
 #include <cstdint>
 #include <mutex>
 #include <span>
@@ -24,7 +25,8 @@ class Film {
   static int64_t memory_bytes(int64_t width, int64_t height) {
     return width * height *
            (3 * int64_t(sizeof(float) + sizeof(double)) + int64_t(sizeof(float) + sizeof(double)) +
-            2 * int64_t(sizeof(uint32_t)) + int64_t(sizeof(float)));
+            int64_t(sizeof(uint32_t) + sizeof(uint64_t)) + 2 * int64_t(sizeof(uint32_t)) +
+            2 * int64_t(sizeof(float)));
   }
 
   int width() const { return width_; }
@@ -33,12 +35,14 @@ class Film {
   // The samples of pixel (x, y) so far: the index its next sample draws.
   uint32_t count(int x, int y) const { return count_[size_t(y) * size_t(width_) + size_t(x)]; }
 
-  // The staging sum of the current pass's samples of one pixel, and of their squared channels.
-  void set_pass_sum(int x, int y, Rgb sum, float sum_squares) {
+  // The staging sum of the current pass's samples of one pixel, of their squared channels, and the
+  // rays they traced.
+  void set_pass_sum(int x, int y, Rgb sum, float sum_squares, uint32_t rays) {
     const size_t i = size_t(y) * size_t(width_) + size_t(x);
     float* p = &pass_[i * 3];
     p[0] = sum.x, p[1] = sum.y, p[2] = sum.z;
     pass_squares_[i] = sum_squares;
+    pass_rays_[i] = rays;
   }
   // Adds the staged pass of `spp` samples per pixel to the totals.
   void merge_pass(int spp);
@@ -56,6 +60,8 @@ class Film {
   // Each pixel's standard deviation of one sample (over its channels, sqrt of the summed variances),
   // from the uniform passes before the first call; the same from then on. Call between passes.
   std::span<const float> deviations();
+  // Each pixel's rays per sample over the same passes, the cost of one more of its samples.
+  std::span<const float> costs();
 
   int spp() const;  // samples per pixel: the mean count, rounded down
   uint64_t samples() const;
@@ -64,8 +70,10 @@ class Film {
  private:
   int width_, height_;
   std::vector<float> pass_, pass_squares_;
+  std::vector<uint32_t> pass_rays_;
   std::vector<double> squares_;  // sums of squared channels while every pass is uniform
-  std::vector<float> deviation_;
+  std::vector<uint64_t> rays_;   // and of rays
+  std::vector<float> deviation_, cost_;
   bool restored_ = false;
   mutable std::mutex mutex_;  // guards total_, count_ and samples_
   std::vector<double> total_;

@@ -111,10 +111,12 @@ struct Renderer::Impl {
 
   // Renders the samples of every pixel of the tile: pixel (x, y) draws `runs(x, y).n` samples from
   // index `runs(x, y).first`, and hands their sum and the sum of their squared channels to
-  // `store(x, y, sum, squares)`. The camera rays of one sample index in a run of kPacket pixels of a
-  // row are traced as one packet (of those pixels that draw that sample): which pixels share a packet
-  // depends only on the tile and the counts, so a pass, a range of samples or another thread count
-  // traces every ray alike. Each pixel adds its samples in index order.
+  // `store(x, y, sum, squares)`. Camera rays are traced kPacket at a time, filled in order from the
+  // samples of a run of kPacket pixels of a row: sample i of each pixel that draws it, then sample
+  // i + 1, so a pass with the same counts everywhere traces one sample index of the run per packet,
+  // and an adaptive pass, whose counts differ, still fills every packet but the run's last. Which rays
+  // share a packet depends only on the tile and the counts, so a pass, a range of samples or another
+  // thread count traces every ray alike. Each pixel adds its samples in index order.
   template <class Runs, class Store>
   void render_tile(int tile, Runs&& runs_of, Store&& store) {
     const FlushDenormals ftz;
@@ -133,29 +135,40 @@ struct Renderer::Impl {
         }
         Rgb sums[kPacket] = {};
         float squares[kPacket] = {};
-        for (uint32_t i = 0; i < longest; ++i) {
-          int lanes[kPacket], active = 0;
-          uint32_t indices[kPacket];
-          for (int k = 0; k < n; ++k)
-            if (i < runs[k].n) indices[active] = runs[k].first + i, lanes[active++] = k;
+        uint32_t pixel_rays[kPacket] = {};
+        int lanes[kPacket], queued = 0;
+        uint32_t indices[kPacket];
+        const auto flush = [&] {
           Rgb l[kPacket];
-          trace_packet(xs, y, {lanes, size_t(active)}, indices, l, tile_rays);
-          for (int a = 0; a < active; ++a) {
+          uint64_t lane_rays[kPacket] = {};
+          trace_packet(xs, y, {lanes, size_t(queued)}, indices, l, lane_rays);
+          for (int a = 0; a < queued; ++a) {
+            tile_rays += lane_rays[a];
+            pixel_rays[lanes[a]] += uint32_t(lane_rays[a]);
             if (!finite(l[a])) continue;  // a numerical failure must not poison the image
             sums[lanes[a]] += l[a];
             squares[lanes[a]] += l[a].x * l[a].x + l[a].y * l[a].y + l[a].z * l[a].z;
           }
-        }
-        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k], squares[k]);
+          queued = 0;
+        };
+        for (uint32_t i = 0; i < longest; ++i)
+          for (int k = 0; k < n; ++k) {
+            if (i >= runs[k].n) continue;
+            indices[queued] = runs[k].first + i, lanes[queued++] = k;
+            if (queued == kPacket) flush();
+          }
+        if (queued > 0) flush();
+        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k], squares[k], pixel_rays[k]);
       }
     }
     samples.fetch_add(tile_samples, std::memory_order_relaxed);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
   }
 
-  // Sample indices[a] of pixel (x + lanes[a], y) for each active lane a, its radiance into out[a].
+  // Sample indices[a] of pixel (x + lanes[a], y) for each lane a, its radiance into out[a]; a pixel
+  // may fill several lanes.
   void trace_packet(int x, int y, std::span<const int> lanes, const uint32_t* indices, Rgb* out,
-                    uint64_t& tile_rays) const {
+                    uint64_t* lane_rays) const {
     std::optional<PathSampler> samplers[kPacket];
     Ray camera_rays[kPacket];
     std::optional<SurfaceHit> hits[kPacket];
@@ -169,15 +182,15 @@ struct Renderer::Impl {
     }
     geometry.intersect_packet({camera_rays, n}, {hits, n});
     for (size_t a = 0; a < n; ++a)
-      out[a] = integrator.radiance(camera_rays[a], hits[a], *samplers[a], tile_rays);
+      out[a] = integrator.radiance(camera_rays[a], hits[a], *samplers[a], lane_rays[a]);
   }
 
   // Renders every tile with the samples `runs(x, y)` of each pixel into the film's staging buffer.
   template <class Runs>
   bool render_into_film(const std::atomic<bool>& cancel, const std::function<void()>& on_tile,
                         const Runs& runs) {
-    const auto store = [this](int x, int y, Rgb sum, float squares) {
-      film.set_pass_sum(x, y, sum, squares);
+    const auto store = [this](int x, int y, Rgb sum, float squares, uint32_t traced) {
+      film.set_pass_sum(x, y, sum, squares, traced);
     };
     return for_each_tile(tiles_x * tiles_y, cancel, on_tile, [&](int t) { render_tile(t, runs, store); });
   }
@@ -236,7 +249,7 @@ bool Renderer::render_adaptive_pass(int spp, const std::atomic<bool>& cancel,
   }
   const int width = impl_->settings.width;
   const std::vector<uint32_t> counts =
-      allocate_samples(film.deviations(), width, impl_->settings.height,
+      allocate_samples(allocation_weights(film.deviations(), film.costs()), width, impl_->settings.height,
                        uint64_t(spp) * uint64_t(width) * uint64_t(impl_->settings.height),
                        impl_->settings.seed, impl_->adaptive_passes++);
   const auto runs = [&film, &counts, width](int x, int y) {
@@ -253,7 +266,7 @@ std::optional<RangePartial> Renderer::render_range(SampleRange range, const std:
   const uint64_t rays_before = impl_->rays.load();
   RangePartial out{range, 0, PartialFilm(impl_->settings.width, impl_->settings.height)};
   const auto runs = [range](int, int) { return SampleRun{range.first, uint32_t(range.count())}; };
-  const auto store = [&out, range](int x, int y, Rgb sum, float) {
+  const auto store = [&out, range](int x, int y, Rgb sum, float, uint32_t) {
     out.film.add(x, y, sum, uint32_t(range.count()));
   };
   const bool finished =

@@ -1,5 +1,6 @@
 // The allocation of an adaptive pass's samples (adaptive_allocation.hpp): counts in proportion to the
-// neighbours' deviations, and never a function of a pixel's own deviation.
+// neighbours' weights (deviation over the square root of the cost), and never a function of a pixel's
+// own weight.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,6 +83,44 @@ TEST(AdaptiveAllocation, NoDeviationAnywhereGivesEveryPixelTheMean) {
   const auto counts = allocate_samples(sigma, kSize, kSize, kBudget, 1, 0);
   for (const uint32_t c : counts) EXPECT_EQ(c, 8u);
   EXPECT_THROW(allocate_samples(sigma, kSize, kSize + 1, kBudget, 1, 0), Error);
+}
+
+TEST(AdaptiveAllocation, WeightIsTheDeviationOverTheRootOfTheCost) {
+  const std::vector<float> sigma = {2, 2, 3, 0, 5}, cost = {1, 4, 9, 7, 0.25f};
+  const std::vector<float> w = allocation_weights(sigma, cost);
+  ASSERT_EQ(w.size(), 5u);
+  EXPECT_FLOAT_EQ(w[0], 2.0f);
+  EXPECT_FLOAT_EQ(w[1], 1.0f);
+  EXPECT_FLOAT_EQ(w[2], 1.0f);
+  EXPECT_FLOAT_EQ(w[3], 0.0f);
+  EXPECT_FLOAT_EQ(w[4], 5.0f);  // a cost under one ray (none measured) counts as one
+  EXPECT_THROW(allocation_weights(sigma, std::vector<float>(4, 1.0f)), Error);
+}
+
+TEST(AdaptiveAllocation, CostlierPixelsOfEqualDeviationGetFewerSamples) {
+  // The same deviation everywhere; a sample of the right half costs 4 rays, of the left half 1. Away
+  // from the border the adaptive 80% of the budget goes in proportion 1 : 1/sqrt(4) = 2 : 1, so that
+  // sigma^2 / n summed over the image is smallest for the rays spent. The mean of each half's counts
+  // over its 6 x 16 outer columns, each count rounded up or down: within 0.5 of the expectation.
+  std::vector<float> sigma(kSize * kSize, 1.0f), cost(kSize * kSize, 1.0f);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = kSize / 2; x < kSize; ++x) cost[size_t(y * kSize + x)] = 4;
+  const auto counts = allocate_samples(allocation_weights(sigma, cost), kSize, kSize, kBudget, 3, 0);
+  const auto mean_count = [&](int x0, int x1) {
+    double sum = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = x0; x < x1; ++x) sum += counts[size_t(y * kSize + x)];
+    return sum / ((x1 - x0) * kSize);
+  };
+  const double left = mean_count(0, 6), right = mean_count(kSize - 6, kSize);
+  // Each pixel's share is its largest neighbour's weight: 1 up to the first costly column, which has a
+  // cheap neighbour, and 1/2 beyond it.
+  double total = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) total += x <= kSize / 2 ? 1.0 : 0.5;
+  const double even = 0.2 * double(kBudget) / (kSize * kSize);
+  EXPECT_NEAR(left, 0.8 * double(kBudget) / total + even, 0.5);
+  EXPECT_NEAR(right, 0.8 * double(kBudget) * 0.5 / total + even, 0.5);
 }
 
 TEST(AdaptiveAllocation, WarmupIsAQuarterAndAtLeastTwo) {
