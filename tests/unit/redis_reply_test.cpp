@@ -1,0 +1,40 @@
+// parse_reply (server/redis_client.hpp): the Redis protocol's replies read as a connection reads them,
+// and arrays whose count the bytes cannot hold refused before anything is allocated for them.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "server/redis_client.hpp"
+#include "support/test_data.hpp"
+
+namespace lp::server {
+namespace {
+
+TEST(RedisReply, ReadsNestedArraysStringsAndIntegers) {
+  const auto r = parse_reply("*3\r\n$5\r\nhello\r\n:42\r\n*1\r\n+OK\r\n");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->type, RedisReply::Type::Array);
+  ASSERT_EQ(r->elements.size(), 3u);
+  EXPECT_EQ(r->elements[0].text, "hello");
+  EXPECT_EQ(r->elements[1].integer, 42);
+  ASSERT_EQ(r->elements[2].elements.size(), 1u);
+  EXPECT_EQ(r->elements[2].elements[0].text, "OK");
+}
+
+TEST(RedisReply, ABulkStringThatLooksLikeAnArrayHeaderIsData) {
+  const auto r = parse_reply("$11\r\n*99999999\r\n\r\n");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->text, "*99999999\r\n");
+}
+
+TEST(RedisReply, AnArrayCountTheBytesCannotHoldIsRefused) {
+  EXPECT_FALSE(parse_reply("*344444444\r\n"));
+  EXPECT_FALSE(parse_reply("*2\r\n:1\r\n"));  // one element short: no whole reply
+  EXPECT_TRUE(parse_reply("*-1\r\n"));        // a null array
+  // The fuzzer's reproducer: a count of 344444444 under nested headers (hiredis would calloc 2.7 GB).
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("redis_reply", "huge_array_count"));
+  EXPECT_FALSE(parse_reply({reinterpret_cast<const char*>(bytes.data()), bytes.size()}));
+}
+
+}  // namespace
+}  // namespace lp::server
