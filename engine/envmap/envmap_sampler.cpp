@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "engine/core/fast_sincos.hpp"
+
 namespace lp {
 namespace {
 
@@ -49,11 +51,9 @@ EnvSample EnvMapSampler::finish(const GridSample& g) const {
   s.v = float(g.v);
   s.theta = float(g.v * kPi);
   s.phi = float(g.u * 2.0 * kPi);
-  float sin_theta, cos_theta, sin_phi, cos_phi;
-  ::sincosf(s.theta, &sin_theta, &cos_theta);
-  ::sincosf(s.phi, &sin_phi, &cos_phi);
-  s.direction = {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta};
-  s.pdf = solid_angle_pdf(g.density, sin_theta);
+  const SinCos theta = sincos_turns(float(0.5 * g.v)), phi = sincos_turns(float(g.u));
+  s.direction = {theta.sin * phi.cos, theta.sin * phi.sin, theta.cos};
+  s.pdf = solid_angle_pdf(g.density, theta.sin);
   s.radiance = map_.image().at(g.x, g.y);
   return s;
 }
@@ -96,7 +96,7 @@ void EnvMapSampler::sample_alias(const AliasTable2D& table, std::span<const Alia
 float EnvMapSampler::pdf(Vec3 direction) const {
   const latlong::Uv uv = latlong::uv(direction);
   const int x = latlong::pixel_x(uv.u, dist_.width()), y = latlong::pixel_y(uv.v, dist_.height());
-  return pdf(x, y, std::sin(uv.v * kPiF));
+  return pdf(x, y, latlong::sin_theta(direction));
 }
 
 }  // namespace lp

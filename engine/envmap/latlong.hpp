@@ -7,6 +7,7 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/core/fast_atan2.hpp"
+#include "engine/core/fast_sincos.hpp"
 #include "engine/core/vec3.hpp"
 
 namespace lp::latlong {
@@ -21,7 +22,14 @@ inline Vec3 direction_from_angles(float theta, float phi) {
 }
 
 inline Vec3 direction(Uv uv) {
-  return direction_from_angles(uv.v * kPiF, uv.u * 2.0f * kPiF);
+  const SinCos theta = sincos_turns(0.5f * uv.v), phi = sincos_turns(uv.u);
+  return {theta.sin * phi.cos, theta.sin * phi.sin, theta.cos};
+}
+
+// sin(theta) of a direction `d` (need not be normalised), with full relative precision near both
+// poles, where sin(v * pi) loses it.
+inline float sin_theta(Vec3 d) {
+  return std::sqrt(d.x * d.x + d.y * d.y) / length(d);
 }
 
 // u in [0, 1), v in [0, 1]; `d` need not be normalised (its squared components must not overflow or

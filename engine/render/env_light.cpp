@@ -81,10 +81,8 @@ LightSample EnvLight::sample_importance(Point2 u) const {
 EnvPixel EnvLight::locate(Vec3 world_direction) const {
   const Vec3 d = to_map(world_direction);
   const latlong::Uv uv = latlong::uv(d);
-  // sin(theta) = hypot(x, y) / |d|, the same value as sin(uv.v * pi) without another sine.
-  const float sin_theta = std::sqrt(d.x * d.x + d.y * d.y) / length(d);
-  const EnvPixel p{latlong::pixel_x(uv.u, grid_->width()), latlong::pixel_y(uv.v, grid_->height()), sin_theta,
-                   uv};
+  const EnvPixel p{latlong::pixel_x(uv.u, grid_->width()), latlong::pixel_y(uv.v, grid_->height()),
+                   latlong::sin_theta(d), uv};
   if (importance_)
     importance_->prefetch(p.x, p.y);
   else

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/constants.hpp"
+#include "engine/core/fast_sincos.hpp"
 
 namespace lp::render {
 
@@ -33,9 +34,9 @@ Vec3 Ggx::sample_visible_normal(Vec3 wo, float u1, float u2) const {
   const Vec3 t2 = cross(vh, t1);
   // A point on the projected disk, squeezed towards the visible half.
   const float r = std::sqrt(u1);
-  const float phi = 2.0f * kPiF * u2;
-  const float p1 = r * std::cos(phi);
-  float p2 = r * std::sin(phi);
+  const SinCos phi = sincos_turns(u2);
+  const float p1 = r * phi.cos;
+  float p2 = r * phi.sin;
   const float s = 0.5f * (1.0f + vh.z);
   p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * p2;
   const Vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/constants.hpp"
+#include "engine/core/fast_sincos.hpp"
 #include "engine/sh/sh_projection.hpp"
 #include "engine/sun/sun_extraction.hpp"
 
@@ -35,8 +36,8 @@ LightSample SunLight::sample(Point2 u) const {
   // cos theta = 1 - u (1 - cos r); sin theta from the same product, exact where cos theta rounds to 1.
   const float a = u.x * one_minus_cos_;
   const float sin_theta = std::sqrt(std::max(0.0f, a * (2 - a)));
-  const float phi = 2 * kPiF * u.y;
-  const Vec3 local{sin_theta * std::cos(phi), sin_theta * std::sin(phi), 1 - a};
+  const SinCos phi = sincos_turns(u.y);
+  const Vec3 local{sin_theta * phi.cos, sin_theta * phi.sin, 1 - a};
   return {normalize(frame_.to_world(local)), radiance_, pdf_};
 }
 
