@@ -20,8 +20,18 @@ void build_guide(const float* cdf, size_t stride, int n, int g, uint32_t* guide)
 }
 
 int find(const float* cdf, size_t stride, int n, const uint32_t* guide, int g, float u) {
-  const int j = std::clamp(int(u * float(g)), 0, g - 1);
+  const int j = guide_index(u, g);
   int lo = int(guide[j]), hi = int(guide[j + 1]);  // the answer, unless u * g rounded across j
+  // A u drawn uniformly meets n / g + 1 cells between its guides on average, whatever the weights.
+  // Counting the few at or below u has no branch to mispredict, and its loads do not wait on each
+  // other as a binary search's do; a long run of cells (empty ones) is still searched.
+  constexpr int kCountedCells = 8;
+  if (hi - lo <= kCountedCells) {
+    int below = 0;
+    for (int i = lo + 1; i <= hi; ++i) below += cdf[size_t(i) * stride] <= u;
+    lo += below;
+    hi = lo;
+  }
   while (lo < hi) {
     const int mid = (lo + hi + 1) / 2;
     if (cdf[size_t(mid) * stride] <= u)
