@@ -5,7 +5,7 @@
 # preset on forest.exr, and the glossy scene (bench_data.hpp: diffuse, plastic and rough gold on a plane)
 # on city.exr, whose sun carries a fifth of the power; each at 1 and 2 threads. Prints, per case and error
 # level, the CPU seconds (all threads) and wall seconds each build takes to reach it, and their ratios.
-# Flags after the sixth argument go to both builds' runs (render_error_bench's, e.g. --adaptive=1; a build
+# Flags after the sixth argument go to both builds' runs (render_error_bench's, e.g. --adaptive=1 or --repeats=3; a build
 # whose engine lacks the option ignores it). References are always uniform.
 # Usage: bench/speedup_compare.sh BASE_COMMIT [BUILD=build] [size=64] [ref_spp=8192] [max_spp=512] [seeds=4] [flags]
 set -euo pipefail
