@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <thread>
 
 namespace lp::server {
@@ -18,6 +19,9 @@ constexpr auto kConnectTimeout = 2s;
 // Longer than any BLOCK the callers ask for, so a blocked read is not taken for a lost connection.
 constexpr auto kCommandTimeout = 15s;
 constexpr auto kFirstBackoff = 100ms, kMaxBackoff = 2000ms;
+// Entries per XRANGE reply: a render's items stream can hold 16 M (--max-render-spp over
+// --redis-item-spp), and one reply of them would take gigabytes.
+constexpr size_t kRangePage = 1 << 16;
 
 timeval to_timeval(std::chrono::milliseconds d) {
   return {static_cast<time_t>(d.count() / 1000), static_cast<suseconds_t>(d.count() % 1000 * 1000)};
@@ -227,8 +231,19 @@ void RedisClient::xgroup_create(std::string_view key, std::string_view group, st
   }
 }
 
+// Each page starts after the last entry of the one before ("(ID": Redis 6.2, as XAUTOCLAIM).
 std::vector<StreamEntry> RedisClient::xrange(std::string_view key) {
-  return range_entries(std::string(key), command({"XRANGE", key, "-", "+"}));
+  const std::string count = std::to_string(kRangePage);
+  std::vector<StreamEntry> out;
+  std::string start = "-";
+  for (;;) {
+    const RedisReply reply = command({"XRANGE", key, start, "+", "COUNT", count});
+    auto page = range_entries(std::string(key), reply);
+    if (page.empty()) return out;
+    start = "(" + page.back().id;
+    out.insert(out.end(), std::make_move_iterator(page.begin()), std::make_move_iterator(page.end()));
+    if (reply.elements.size() < kRangePage) return out;
+  }
 }
 
 std::vector<std::string> RedisClient::xpending(std::string_view key, std::string_view group, int64_t count) {

@@ -63,7 +63,7 @@ class RedisClient {
   // XGROUP CREATE key group start MKSTREAM; a group that exists already is left as it is. From start
   // "0" the group delivers the stream's entries from the first, from "$" only entries added later.
   void xgroup_create(std::string_view key, std::string_view group, std::string_view start = "0");
-  // The entries of a stream (XRANGE key - +).
+  // The entries of a stream (XRANGE key - +, read in pages).
   std::vector<StreamEntry> xrange(std::string_view key);
   // The ids of up to `count` entries delivered to the group's consumers and not acknowledged.
   std::vector<std::string> xpending(std::string_view key, std::string_view group, int64_t count);

@@ -39,10 +39,6 @@ using namespace std::chrono_literals;
 
 constexpr int kSize = 96;
 
-#define SKIP_WITHOUT_REDIS()        \
-  if (!test::redis_server_binary()) \
-  GTEST_SKIP() << "redis-server is not installed (scripts/setup --test installs it)"
-
 std::string body(int spp, int seed, const std::string& envmap = "default") {
   return json{{"envmap", envmap}, {"scene", {{"preset", "materials"}}},
               {"width", kSize},   {"height", kSize},

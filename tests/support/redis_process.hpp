@@ -13,6 +13,10 @@ namespace lp::test {
 // The path of redis-server, nullopt when it is not installed (the test then skips).
 std::optional<std::filesystem::path> redis_server_binary();
 
+#define SKIP_WITHOUT_REDIS()              \
+  if (!::lp::test::redis_server_binary()) \
+  GTEST_SKIP() << "redis-server is not installed (scripts/setup --test installs it)"
+
 class RedisProcess {
  public:
   RedisProcess();  // throws std::runtime_error if it does not answer PING within 10 s
