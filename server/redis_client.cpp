@@ -21,7 +21,7 @@ constexpr auto kCommandTimeout = 15s;
 constexpr auto kFirstBackoff = 100ms, kMaxBackoff = 2000ms;
 // Entries per XRANGE reply: a render's items stream can hold 16 M (--max-render-spp over
 // --redis-item-spp), and one reply of them would take gigabytes.
-constexpr size_t kRangePage = 1 << 16;
+constexpr size_t kRangePage = kMaxRedisArrayElements / 16;
 
 timeval to_timeval(std::chrono::milliseconds d) {
   return {static_cast<time_t>(d.count() / 1000), static_cast<suseconds_t>(d.count() % 1000 * 1000)};
@@ -72,6 +72,29 @@ bool array_counts_fit(std::string_view wire) {
   return true;
 }
 
+// hiredis's createArray, which every reader starts with (its static defaultFunctions).
+void* (*hiredis_create_array)(const redisReadTask*, int) = nullptr;
+
+// An array over the bound is not allocated: its count goes where the reader's privdata points (if
+// anywhere), and the reader fails ("Out of memory", for any null object).
+void* create_bounded_array(const redisReadTask* task, int elements) {
+  if (elements <= kMaxRedisArrayElements) return hiredis_create_array(task, elements);
+  if (task->privdata) *static_cast<int*>(task->privdata) = elements;
+  return nullptr;
+}
+
+// Makes `reader` refuse arrays over kMaxRedisArrayElements, writing a refused count to *refused.
+void bound_arrays(redisReader& reader, int* refused) {
+  static redisReplyObjectFunctions functions = [&] {
+    hiredis_create_array = reader.fn->createArray;
+    redisReplyObjectFunctions f = *reader.fn;
+    f.createArray = create_bounded_array;
+    return f;
+  }();
+  reader.fn = &functions;
+  reader.privdata = refused;
+}
+
 std::string ms(std::chrono::milliseconds d) {
   return std::to_string(d.count());
 }
@@ -81,7 +104,9 @@ std::string ms(std::chrono::milliseconds d) {
 std::optional<RedisReply> parse_reply(std::string_view wire) {
   if (!array_counts_fit(wire)) return std::nullopt;
   const std::unique_ptr<redisReader, void (*)(redisReader*)> reader(redisReaderCreate(), redisReaderFree);
-  if (!reader || redisReaderFeed(reader.get(), wire.data(), wire.size()) != REDIS_OK) return std::nullopt;
+  if (!reader) return std::nullopt;
+  bound_arrays(*reader, nullptr);
+  if (redisReaderFeed(reader.get(), wire.data(), wire.size()) != REDIS_OK) return std::nullopt;
   void* raw = nullptr;
   if (redisReaderGetReply(reader.get(), &raw) != REDIS_OK || !raw) return std::nullopt;
   const std::unique_ptr<redisReply, void (*)(void*)> reply(static_cast<redisReply*>(raw), freeReplyObject);
@@ -103,20 +128,31 @@ void RedisClient::connect() {
   }
   redisSetTimeout(context_.get(), to_timeval(kCommandTimeout));
   redisEnableKeepAlive(context_.get());
+  bound_arrays(*context_->reader, &refused_elements_);
 }
 
-// The reply, nullopt when the connection failed (then dropped); throws RedisError for an error reply
-// other than LOADING (Redis reading its append-only file after a restart: try again).
+// The reply on the open connection, nullopt when the connection failed (then dropped); throws
+// RedisError for an error reply other than LOADING (Redis reading its append-only file after a restart:
+// try again), and for an array over the bound (the connection dropped).
 std::optional<RedisReply> RedisClient::try_command(const std::vector<std::string_view>& args) {
-  if (!context_) connect();
+  const std::string_view name = args.empty() ? "" : args[0];
   std::vector<const char*> argv;
   std::vector<size_t> lengths;
   for (const auto a : args) {
     argv.push_back(a.data());
     lengths.push_back(a.size());
   }
+  refused_elements_ = 0;
   auto* raw = static_cast<redisReply*>(
       redisCommandArgv(context_.get(), int(argv.size()), argv.data(), lengths.data()));
+  if (!raw && refused_elements_ > 0) {
+    context_.reset();  // the rest of the reply is unread
+    const std::string what =
+        fmt::format("redis {}: {} answered an array of {} elements, over the bound of {}; connection dropped",
+                    name, address_.url(), refused_elements_, kMaxRedisArrayElements);
+    spdlog::warn("{}", what);
+    throw RedisError(what);
+  }
   if (!raw) {
     spdlog::debug("redis {}: {}", address_.url(), context_->errstr);
     context_.reset();
@@ -126,7 +162,7 @@ std::optional<RedisReply> RedisClient::try_command(const std::vector<std::string
   if (reply->type == REDIS_REPLY_ERROR) {
     const std::string message(reply->str, reply->len);
     if (message.starts_with("LOADING")) return std::nullopt;
-    throw RedisError(fmt::format("redis {}: {}", args.empty() ? "" : std::string(args[0]), message));
+    throw RedisError(fmt::format("redis {}: {}", name, message));
   }
   return copy(*reply);
 }
@@ -138,11 +174,12 @@ RedisReply RedisClient::command(const std::vector<std::string_view>& args) {
   std::string last_failure = "no answer";
   for (;;) {
     try {
-      if (auto reply = try_command(args)) return std::move(*reply);
+      if (!context_) connect();
     } catch (const RedisError& e) {
-      if (context_) throw;  // an error reply: the command itself failed
       last_failure = e.what();
     }
+    if (context_)
+      if (auto reply = try_command(args)) return std::move(*reply);
     if (Clock::now() + backoff > deadline)
       throw RedisError(fmt::format("redis {} unreachable for {} s: {}", address_.url(),
                                    std::chrono::duration_cast<std::chrono::seconds>(retry_for_).count(),

@@ -4,6 +4,12 @@
 // the command sent again, for up to `retry_for`; then RedisError. Commands that may run twice this way are
 // harmless twice in how they are used (a partial is keyed by its range, notices are deduplicated).
 // Thread-safe (one command at a time).
+//
+// hiredis allocates an array's table of element pointers from the array's header, before any element
+// arrives, so a header of a few bytes could ask for gigabytes. Every reader here (a connection's, and
+// parse_reply's) refuses an array of more than kMaxRedisArrayElements before that. A command answered
+// so throws RedisError at once, naming the count, the bound and the server, and its connection is
+// dropped (the rest of the reply is unread); it is not retried, as the same server would answer the same.
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -21,7 +27,16 @@ struct redisContext;
 
 namespace lp::server {
 
-// Redis could not be reached for `retry_for`, or answered a command with an error.
+// The most elements an array in a reply may have. The largest the commands below get back are a
+// render's items stream (XRANGE, read in pages of a sixteenth of this: a render can have 16 M items,
+// --max-render-spp over --redis-item-spp), its notices since the last read (XREAD, every half second),
+// the renders with items out (SMEMBERS: a few per server) and the items workers hold (XPENDING;
+// XREADGROUP and XAUTOCLAIM ask for one). 1 M is far above each, and keeps a table at 8 MB of pointers
+// whatever the server answers (64 MB for tables nested the 8 levels deep hiredis allows).
+inline constexpr int kMaxRedisArrayElements = 1 << 20;
+
+// Redis could not be reached for `retry_for`, answered a command with an error, or with an array over
+// kMaxRedisArrayElements.
 class RedisError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -29,7 +44,8 @@ class RedisError : public std::runtime_error {
 
 // The first reply in `wire`, bytes of the Redis protocol read as a connection reads them; nullopt when
 // they hold no whole reply or are no such bytes, or when an array's count exceeds what the bytes after
-// it could hold (it cannot be whole, and its table would be allocated before its elements are read).
+// it could hold (it cannot be whole, and its table would be allocated before its elements are read) or
+// kMaxRedisArrayElements.
 std::optional<RedisReply> parse_reply(std::string_view wire);
 
 class RedisClient {
@@ -88,6 +104,7 @@ class RedisClient {
   const std::chrono::milliseconds retry_for_;
   std::mutex mutex_;
   std::unique_ptr<redisContext, void (*)(redisContext*)> context_;
+  int refused_elements_ = 0;  // the count of the array the connection's reader refused, if it did
 };
 
 }  // namespace lp::server

@@ -1,5 +1,7 @@
 // parse_reply (server/redis_client.hpp): the Redis protocol's replies read as a connection reads them,
-// and arrays whose count the bytes cannot hold refused before anything is allocated for them.
+// and arrays whose count the bytes cannot hold, or over kMaxRedisArrayElements, refused before anything
+// is allocated for them.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +36,21 @@ TEST(RedisReply, AnArrayCountTheBytesCannotHoldIsRefused) {
   // The fuzzer's reproducer: a count of 344444444 under nested headers (hiredis would calloc 2.7 GB).
   const auto bytes = test::read_bytes(test::fuzz_corpus_path("redis_reply", "huge_array_count"));
   EXPECT_FALSE(parse_reply({reinterpret_cast<const char*>(bytes.data()), bytes.size()}));
+}
+
+// `count` empty status replies under one array header.
+std::string array_of(int count) {
+  std::string wire = fmt::format("*{}\r\n", count);
+  for (int i = 0; i < count; ++i) wire += "+\r\n";
+  return wire;
+}
+
+TEST(RedisReply, AnArrayOverTheBoundIsRefusedAsOnAConnection) {
+  const auto whole = parse_reply(array_of(kMaxRedisArrayElements));
+  ASSERT_TRUE(whole);
+  EXPECT_EQ(whole->elements.size(), size_t(kMaxRedisArrayElements));
+  EXPECT_FALSE(parse_reply(array_of(kMaxRedisArrayElements + 1)));
+  EXPECT_FALSE(parse_reply("*1\r\n" + array_of(kMaxRedisArrayElements + 1)));
 }
 
 }  // namespace
