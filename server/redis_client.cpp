@@ -5,7 +5,6 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <charconv>
 #include <iterator>
 #include <thread>
 
@@ -49,29 +48,6 @@ RedisReply copy(const redisReply& r) {
   return out;
 }
 
-// Whether every array header in `wire` counts no more elements than the bytes after it can hold (each
-// takes at least 3: a type byte and CRLF). hiredis allocates an array's element table from its header
-// before reading the elements, so a header of a few bytes could otherwise ask for gigabytes. Walks the
-// headers in order, skipping bulk strings' payloads; stops where the bytes end or stop being headers.
-bool array_counts_fit(std::string_view wire) {
-  size_t at = 0;
-  while (at < wire.size()) {
-    const size_t end = wire.find("\r\n", at);
-    if (end == std::string_view::npos) return true;
-    const char type = wire[at];
-    const std::string_view digits = wire.substr(at + 1, end - at - 1);
-    at = end + 2;
-    if (type != '*' && type != '$') continue;
-    unsigned long long n = 0;
-    const auto [last, error] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
-    if (error != std::errc() || last != digits.data() + digits.size()) continue;  // -1 (null), or not a count
-    const size_t left = wire.size() - at;
-    if (type == '*' && n > left / 3) return false;
-    if (type == '$') at += size_t(std::min<unsigned long long>(n + 2, left));
-  }
-  return true;
-}
-
 // hiredis's createArray, which every reader starts with (its static defaultFunctions).
 void* (*hiredis_create_array)(const redisReadTask*, int) = nullptr;
 
@@ -102,7 +78,6 @@ std::string ms(std::chrono::milliseconds d) {
 }  // namespace
 
 std::optional<RedisReply> parse_reply(std::string_view wire) {
-  if (!array_counts_fit(wire)) return std::nullopt;
   const std::unique_ptr<redisReader, void (*)(redisReader*)> reader(redisReaderCreate(), redisReaderFree);
   if (!reader) return std::nullopt;
   bound_arrays(*reader, nullptr);

@@ -43,9 +43,8 @@ class RedisError : public std::runtime_error {
 };
 
 // The first reply in `wire`, bytes of the Redis protocol read as a connection reads them; nullopt when
-// they hold no whole reply or are no such bytes, or when an array's count exceeds what the bytes after
-// it could hold (it cannot be whole, and its table would be allocated before its elements are read) or
-// kMaxRedisArrayElements.
+// they hold no whole reply or are no such bytes, or when an array's count exceeds
+// kMaxRedisArrayElements (refused as a connection's reader refuses it, before its table is allocated).
 std::optional<RedisReply> parse_reply(std::string_view wire);
 
 class RedisClient {

@@ -20,7 +20,7 @@ void build_guide(const float* cdf, size_t stride, int n, int g, uint32_t* guide)
 }
 
 int find(const float* cdf, size_t stride, int n, const uint32_t* guide, int g, float u) {
-  const int j = guide_index(u, g);
+  const int j = std::clamp(int(u * float(g)), 0, g - 1);
   int lo = int(guide[j]), hi = int(guide[j + 1]);  // the answer, unless u * g rounded across j
   // A u drawn uniformly meets n / g + 1 cells between its guides on average, whatever the weights.
   // Counting the few at or below u has no branch to mispredict, and its loads do not wait on each

@@ -35,12 +35,6 @@ inline int guide_size(int n, int cells_per_guide) {
   return n / cells_per_guide > 1 ? n / cells_per_guide : 1;
 }
 
-// The guide interval of u: the cell of u lies between guide[j] and guide[j + 1].
-inline int guide_index(float u, int g) {
-  const int j = int(u * float(g));
-  return j < 0 ? 0 : j > g - 1 ? g - 1 : j;
-}
-
 // guide[j] = the cell holding j / g, for j = 0 .. g (up to rounding, which find() corrects).
 void build_guide(const float* cdf, size_t stride, int n, int g, uint32_t* guide);
 

@@ -1,6 +1,6 @@
 // parse_reply (server/redis_client.hpp): the Redis protocol's replies read as a connection reads them,
-// and arrays whose count the bytes cannot hold, or over kMaxRedisArrayElements, refused before anything
-// is allocated for them.
+// and arrays over kMaxRedisArrayElements refused before anything is allocated for them (a count the
+// bytes cannot hold is no whole reply either).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
