@@ -1,10 +1,10 @@
-// The path tracer: the `sphere` and `materials` presets, and the sphere as rough gold (GGX alpha 0.5),
-// on forest.exr (1024 x 512) at fixed spp and thread count, reporting camera samples/s and rays/s (all
-// rays: camera, bounce, shadow); and the raw Embree throughput (rtcIntersect1 / rtcOccluded1 on the
-// same scenes, random rays) as the ceiling, and the tracer's rays/s as a fraction of it measured side by
-// side (RenderOfCeiling). Rates are per wall-clock second; the *_per_cpu_s counters
-// divide by the process CPU time instead (all threads), which stays meaningful when other work shares
-// the cores.
+// The path tracer: the `sphere` and `materials` presets, the sphere as rough gold (GGX alpha 0.5), and
+// the bunny on a plane (bench/scenes/bunny.json), on forest.exr (1024 x 512) at fixed spp and thread count,
+// reporting camera samples/s and rays/s (all rays: camera, bounce, shadow); and the raw Embree throughput
+// (rtcIntersect1 / rtcOccluded1 on the same scenes, random rays) as the ceiling, and the tracer's rays/s as a
+// fraction of it measured side by side (RenderOfCeiling). Rates are per wall-clock second; the *_per_cpu_s
+// counters divide by the process CPU time instead (all threads), which stays meaningful when other work
+// shares the cores.
 // Run: ./build/bin/render_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 #include <tbb/parallel_for.h>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bench_data.hpp"
+#include "bench_scene_file.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/fresnel/metals.hpp"
 #include "engine/image/image_io.hpp"
@@ -34,9 +35,10 @@ std::shared_ptr<const EnvMap> forest() {
 
 const char* const kPresets[] = {"sphere", "materials"};
 constexpr int kSize = 128, kSpp = 8;
-constexpr int kRoughGold = 2;  // the scene index after the presets
+constexpr int kRoughGold = 2, kBunny = 3;  // the scene indices after the presets
 
 SceneDesc bench_scene(int index) {
+  if (index == kBunny) return bench::bench_scene_file("bunny.json");
   if (index != kRoughGold) return *scene_preset(kPresets[index]);
   SceneDesc s = *scene_preset("sphere");
   const ConductorPreset& gold = lookup_metal("gold");
@@ -177,9 +179,9 @@ uint64_t trace_raw(const EmbreeScene& scene, const std::vector<Ray>& rays, bool 
   return hits.load();
 }
 
-// args: preset index, 0 = rtcIntersect1 / 1 = rtcOccluded1, threads.
+// args: scene index, 0 = rtcIntersect1 / 1 = rtcOccluded1, threads.
 void BM_EmbreeRaw(benchmark::State& state) {
-  const EmbreeScene scene(*scene_preset(kPresets[state.range(0)]), {});
+  const EmbreeScene scene(bench_scene(int(state.range(0))), {});
   const std::vector<Ray> rays = random_rays(1 << 16);
   const bool occluded = state.range(1) == 1;
   tbb::task_arena arena(int(state.range(2)));
@@ -193,13 +195,15 @@ void BM_EmbreeRaw(benchmark::State& state) {
   state.counters["hit_fraction"] = double(hits) / double(state.iterations() * rays.size());
 }
 BENCHMARK(BM_EmbreeRaw)
-    ->ArgNames({"preset", "occluded", "threads"})
+    ->ArgNames({"scene", "occluded", "threads"})
     ->Args({0, 0, 1})
     ->Args({0, 0, 2})
     ->Args({0, 1, 2})
     ->Args({1, 0, 1})
     ->Args({1, 0, 2})
     ->Args({1, 1, 2})
+    ->Args({kBunny, 0, 1})
+    ->Args({kBunny, 0, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -207,9 +211,9 @@ BENCHMARK(BM_EmbreeRaw)
 // same preset, map-lit (envmap mode), at the same thread count: a render pass of kSpp, then as many
 // random rays through rtcIntersect1 as the pass traced. of_ceiling compares rates per CPU second (the
 // steadier figure when other work shares the cores), of_ceiling_wall per wall second.
-// args: preset index, threads.
+// args: scene index, threads.
 void BM_RenderOfCeiling(benchmark::State& state) {
-  const SceneDesc preset = *scene_preset(kPresets[state.range(0)]);
+  const SceneDesc preset = bench_scene(int(state.range(0)));
   RenderSettings settings;
   settings.width = settings.height = kSize;
   tbb::task_arena arena(int(state.range(1)));
@@ -239,11 +243,13 @@ void BM_RenderOfCeiling(benchmark::State& state) {
   state.counters["of_ceiling_wall"] = (rays / render_wall) / (double(raw_rays) / raw_wall);
 }
 BENCHMARK(BM_RenderOfCeiling)
-    ->ArgNames({"preset", "threads"})
+    ->ArgNames({"scene", "threads"})
     ->Args({0, 1})
     ->Args({0, 2})
     ->Args({1, 1})
     ->Args({1, 2})
+    ->Args({kBunny, 1})
+    ->Args({kBunny, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
