@@ -208,17 +208,17 @@ BENCHMARK(BM_EmbreeRaw)
     ->UseRealTime();
 
 // The path tracer's rays/s as a fraction of the raw ceiling, both measured in each iteration on the
-// same preset, map-lit (envmap mode), at the same thread count: a render pass of kSpp, then as many
+// same scene, map-lit (envmap mode), at the same thread count: a render pass of kSpp, then as many
 // random rays through rtcIntersect1 as the pass traced. of_ceiling compares rates per CPU second (the
 // steadier figure when other work shares the cores), of_ceiling_wall per wall second.
 // args: scene index, threads.
 void BM_RenderOfCeiling(benchmark::State& state) {
-  const SceneDesc preset = bench_scene(int(state.range(0)));
+  const SceneDesc desc = bench_scene(int(state.range(0)));
   RenderSettings settings;
   settings.width = settings.height = kSize;
   tbb::task_arena arena(int(state.range(1)));
-  Renderer renderer(preset, Lighting{}, settings, forest());
-  const EmbreeScene scene(preset, {});
+  Renderer renderer(desc, Lighting{}, settings, forest());
+  const EmbreeScene scene(desc, {});
   std::atomic<bool> cancel{false};
   double render_cpu = 0, render_wall = 0, raw_cpu = 0, raw_wall = 0;
   uint64_t raw_rays = 0;

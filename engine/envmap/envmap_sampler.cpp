@@ -51,8 +51,8 @@ EnvSample EnvMapSampler::finish(const GridSample& g) const {
   s.v = float(g.v);
   s.theta = float(g.v * kPi);
   s.phi = float(g.u * 2.0 * kPi);
-  const SinCos theta = sincos_turns(float(0.5 * g.v)), phi = sincos_turns(float(g.u));
-  s.direction = {theta.sin * phi.cos, theta.sin * phi.sin, theta.cos};
+  const SinCos theta = sincos_turns(float(0.5 * g.v));
+  s.direction = latlong::direction(theta, sincos_turns(float(g.u)));
   s.pdf = solid_angle_pdf(g.density, theta.sin);
   s.radiance = map_.image().at(g.x, g.y);
   return s;

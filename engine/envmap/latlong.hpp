@@ -21,9 +21,13 @@ inline Vec3 direction_from_angles(float theta, float phi) {
   return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
 }
 
-inline Vec3 direction(Uv uv) {
-  const SinCos theta = sincos_turns(0.5f * uv.v), phi = sincos_turns(uv.u);
+// The direction of polar angle theta and azimuth phi, from their sines and cosines.
+inline Vec3 direction(SinCos theta, SinCos phi) {
   return {theta.sin * phi.cos, theta.sin * phi.sin, theta.cos};
+}
+
+inline Vec3 direction(Uv uv) {
+  return direction(sincos_turns(0.5f * uv.v), sincos_turns(uv.u));
 }
 
 // sin(theta) of a direction `d` (need not be normalised), with full relative precision near both
