@@ -182,8 +182,7 @@ TEST(Lifecycle, SigtermDuringARenderEndsTheStreamExitsZeroAndTheRenderResumesAft
   const json st = api.wait_done(id);
   EXPECT_EQ(st["status"], "done") << st.dump();
   EXPECT_EQ(st["spp_done"], 1024);
-  EXPECT_NE(restarted.log().find("render " + id + " continues after " + std::to_string(spp_done) + " spp"),
-            std::string::npos)
+  EXPECT_TRUE(restarted.wait_log("render " + id + " continues after " + std::to_string(spp_done) + " spp"))
       << restarted.log();
 }
 

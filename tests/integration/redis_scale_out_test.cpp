@@ -101,17 +101,6 @@ int count_lines(const std::string& text, const std::string& what) {
   return n;
 }
 
-// Polls a server's log until it holds `what` `times` times.
-bool wait_log(const test::ServerProcess& s, const std::string& what, int times = 1,
-              std::chrono::seconds limit = 60s) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (count_lines(s.log(), what) >= times) return true;
-    std::this_thread::sleep_for(5ms);
-  }
-  return false;
-}
-
 struct Cluster {
   test::RedisProcess redis;
   std::vector<std::string> common;
@@ -219,7 +208,7 @@ TEST(RedisScaleOut, AWorkerKilledMidItemLeavesItToAnother) {
   Cluster cluster(2, 16, 1);
   const std::string id = submit(*cluster.api, request);
   auto& victim = *cluster.workers[0];
-  ASSERT_TRUE(wait_log(victim, "render " + id + " samples")) << victim.log();
+  ASSERT_TRUE(victim.wait_log("render " + id + " samples")) << victim.log();
   victim.send_signal(SIGKILL);  // mid-item: an item takes far longer than the log poll
   ASSERT_TRUE(victim.wait_exit(10s).has_value());
   const json st = wait_finished(*cluster.api, id);
@@ -234,7 +223,7 @@ TEST(RedisScaleOut, ARenderSurvivesRedisRestarting) {
   const Image reference = single_process_image(request);
   Cluster cluster(1, 2);
   const std::string id = submit(*cluster.api, request);
-  ASSERT_TRUE(wait_log(*cluster.workers[0], "render " + id + " samples", 3));
+  ASSERT_TRUE(cluster.workers[0]->wait_log("render " + id + " samples", 3));
   EXPECT_LT(status(*cluster.api, id)["spp_done"], 64);
   cluster.redis.restart();  // its append-only file keeps the items, partials and notices
   const json st = wait_finished(*cluster.api, id);
@@ -248,7 +237,7 @@ TEST(RedisScaleOut, ARenderSurvivesRedisLosingEveryWrite) {
   const Image reference = single_process_image(request);
   Cluster cluster(2, 4);
   const std::string id = submit(*cluster.api, request);
-  ASSERT_TRUE(wait_log(*cluster.workers[0], "render " + id + " samples", 3));
+  ASSERT_TRUE(cluster.workers[0]->wait_log("render " + id + " samples", 3));
   EXPECT_LT(status(*cluster.api, id)["spp_done"], 192);
   cluster.redis.restart_empty();  // no description, items, group, partials or notices
   const json st = wait_finished(*cluster.api, id);
@@ -266,7 +255,7 @@ TEST(RedisScaleOut, AWorkerRendersItemsAtTheRenderPriorityAndTakesNoRenderOfItsO
   EXPECT_EQ(refused->status, 409);
   EXPECT_EQ(json::parse(refused->body)["error"]["code"], "worker_only") << refused->body;
   const std::string id = submit(*cluster.api, body(4096, 3));
-  ASSERT_TRUE(wait_log(worker, "render " + id + " samples")) << worker.log();
+  ASSERT_TRUE(worker.wait_log("render " + id + " samples")) << worker.log();
   std::this_thread::sleep_for(200ms);  // the arena's threads join the item
   const auto threads = test::threads_of(worker.pid());
   test::expect_render_threads_at(threads, {std::min(threads.main.nice + 10, 19), SCHED_OTHER}, 2);
@@ -307,12 +296,12 @@ TEST(RedisScaleOut, CancelReachesEveryWorker) {
   SKIP_WITHOUT_REDIS();
   Cluster cluster(3, 4096);  // items far longer than the test: only a cancel ends them
   const std::string id = submit(*cluster.api, body(3 * 4096, 3));
-  for (const auto& w : cluster.workers) ASSERT_TRUE(wait_log(*w, "render " + id + " samples")) << w->log();
+  for (const auto& w : cluster.workers) ASSERT_TRUE(w->wait_log("render " + id + " samples")) << w->log();
   const auto r = cluster.api->client()->Delete("/api/v1/renders/" + id);
   ASSERT_TRUE(r && r->status == 202) << (r ? r->body : "no answer");
   EXPECT_EQ(wait_finished(*cluster.api, id)["status"], "cancelled");
   for (const auto& w : cluster.workers)
-    EXPECT_TRUE(wait_log(*w, "cancelled", 1, 30s)) << "a worker went on rendering: " << w->log();
+    EXPECT_TRUE(w->wait_log("cancelled", 1, 30s)) << "a worker went on rendering: " << w->log();
 }
 
 void upload_forest(const test::ServerProcess& s) {
@@ -439,7 +428,7 @@ TEST(RedisScaleOut, AMeshBundleThatDoesNotMatchItsHashIsRefused) {
   Cluster cluster(0, 4, 30, {"--state-dir", api_state.path().string()});
   upload_quad(*cluster.api);
   const std::string id = submit(*cluster.api, asset_body(16, 3));
-  ASSERT_TRUE(wait_log(*cluster.api, "work items of")) << cluster.api->log();
+  ASSERT_TRUE(cluster.api->wait_log("work items of")) << cluster.api->log();
   // The texture changes after the render published its bundle's hash: the api server now sends files
   // of another content under that hash.
   std::ofstream(api_state.path() / "assets" / "quad" / "checker.png", std::ios::binary | std::ios::app)

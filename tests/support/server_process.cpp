@@ -119,6 +119,18 @@ std::string ServerProcess::log() const {
   return read_text(log_path_);
 }
 
+bool ServerProcess::wait_log(const std::string& what, int times, std::chrono::milliseconds limit) const {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  for (;;) {
+    const std::string text = log();
+    int n = 0;
+    for (size_t at = text.find(what); at != std::string::npos && n < times; at = text.find(what, at + 1)) ++n;
+    if (n >= times) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
 void ServerProcess::send_signal(int signal) const {
   if (pid_ > 0) kill(pid_, signal);
 }

@@ -39,6 +39,10 @@ class ServerProcess {
   void wait_until_ready() const;  // until GET /api/v1/ready answers 200; throws after 60 s
   const std::string& log_path() const { return log_path_; }
   std::string log() const;  // the server's output so far
+  // The server logs from a thread of its own, so a line may reach the log after the reply that follows
+  // it: polls the log until it holds `what` at least `times` times; false after `limit`.
+  bool wait_log(const std::string& what, int times = 1,
+                std::chrono::milliseconds limit = std::chrono::seconds(60)) const;
 
   void send_signal(int signal) const;
   // Waits for the process to exit: its exit status, or -N if signal N ended it; nullopt if it is still
