@@ -5,15 +5,15 @@
 #include <memory>
 
 #include "engine/core/memory_budget.hpp"
-#include "server/asset_registry.hpp"
-#include "server/envmap_registry.hpp"
-#include "server/http_metrics.hpp"
-#include "server/job_manager.hpp"
-#include "server/mesh_bundles.hpp"
-#include "server/model_cache.hpp"
+#include "server/assets/asset_registry.hpp"
+#include "server/assets/model_cache.hpp"
+#include "server/jobs/job_manager.hpp"
+#include "server/maps/envmap_registry.hpp"
+#include "server/observability/http_metrics.hpp"
 #include "server/options.hpp"
-#include "server/render_counters.hpp"
-#include "server/state_store.hpp"
+#include "server/renders/render_counters.hpp"
+#include "server/scale_out/mesh_bundles.hpp"
+#include "server/storage/state_store.hpp"
 
 namespace lp::server {
 
@@ -43,7 +43,7 @@ struct App {
   MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
-  AssetRegistry assets;               // model files uploaded for scenes (stored_assets.hpp)
+  AssetRegistry assets;               // model files uploaded for scenes (assets/stored_assets.hpp)
   ModelCache models;                  // the models of scenes' mesh objects, loaded when a request names them
   MeshBundles bundles;                // the models' files, for the workers of split renders (--redis)
   std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
@@ -51,7 +51,7 @@ struct App {
   std::atomic<bool> ready{false};     // the maps to load at start and the state directory are loaded
   HttpMetrics http_metrics;           // requests answered (GET /metrics)
   RenderCounters render_counters;     // what renders traced (GET /metrics)
-  JobManager prefilters;              // prefiltered specular chains (routes_prefilter.cpp)
+  JobManager prefilters;              // prefiltered specular chains (routes/prefilter.cpp)
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)

@@ -11,17 +11,17 @@
 #include <iostream>
 #include <thread>
 
-#include "server/data_dir.hpp"
-#include "server/envmap_loading.hpp"
+#include "server/assets/stored_assets.hpp"
 #include "server/health_check.hpp"
-#include "server/logging.hpp"
-#include "server/render_arena.hpp"
-#include "server/render_worker.hpp"
+#include "server/jobs/job_arena.hpp"
+#include "server/maps/envmap_loading.hpp"
+#include "server/maps/stored_maps.hpp"
+#include "server/observability/logging.hpp"
+#include "server/renders/render_worker.hpp"
+#include "server/renders/stored_renders.hpp"
 #include "server/server.hpp"
 #include "server/shutdown.hpp"
-#include "server/stored_assets.hpp"
-#include "server/stored_maps.hpp"
-#include "server/stored_renders.hpp"
+#include "server/storage/data_dir.hpp"
 
 namespace {
 
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   if (!options) return 0;
   if (!options->health_check_url.empty()) return lp::server::run_health_check(options->health_check_url);
   lp::server::Logging logging(options->log_level, options->log_format);
-  // Render arenas run on workers alone (render_arena.hpp): the limit counts them and one caller.
+  // Render arenas run on workers alone (jobs/job_arena.hpp): the limit counts them and one caller.
   const tbb::global_control threads(
       tbb::global_control::max_allowed_parallelism,
       lp::server::RenderArena::render_workers(options->threads, lp::server::render_arenas(*options)) + 1);

@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "server/bearer_auth.hpp"
 #include "server/health_check.hpp"
-#include "server/log_level.hpp"
-#include "server/machine_memory.hpp"
+#include "server/http/bearer_auth.hpp"
+#include "server/observability/log_level.hpp"
+#include "server/observability/machine_memory.hpp"
 
 namespace lp::server {
 namespace {

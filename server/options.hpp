@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "api/parameters.hpp"
-#include "server/log_format.hpp"
-#include "server/redis_url.hpp"
-#include "server/render_thread_priority.hpp"
-#include "server/server_role.hpp"
+#include "server/jobs/thread_priority.hpp"
+#include "server/observability/log_format.hpp"
+#include "server/scale_out/redis_url.hpp"
+#include "server/scale_out/server_role.hpp"
 
 namespace lp::server {
 
@@ -54,7 +54,7 @@ struct Options {
   int64_t max_finished_mb = api::kMaxFinishedMb.fallback;       // images kept by finished jobs
   RenderPriority render_priority = RenderPriority::Low;         // of the threads that render
   int max_event_streams = int(api::kMaxEventStreams.fallback);  // concurrent GET .../events streams
-  // Connections (server/http_transport.hpp).
+  // Connections (server/http/http_transport.hpp).
   int max_connections = int(api::kMaxConnections.fallback);
   int max_connections_per_client = int(api::kMaxConnectionsPerClient.fallback);
   int header_timeout_s = int(api::kHeaderTimeoutS.fallback);
@@ -64,7 +64,7 @@ struct Options {
   std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
   bool resume_interrupted = false;                       // resume interrupted renders at start
   int shutdown_grace_s = int(api::kShutdownGraceS.fallback);
-  // Renders split over machines through Redis (server/scale_out.hpp).
+  // Renders split over machines through Redis (server/scale_out/scale_out.hpp).
   std::optional<RedisAddress> redis;  // --redis; none: renders run in this process
   ServerRole role = ServerRole::Both;
   std::string advertise_url;  // where workers fetch maps from this server; empty: http://--host:port

@@ -4,12 +4,12 @@
 
 #include <filesystem>
 
-#include "server/compression.hpp"
-#include "server/method_policy.hpp"
-#include "server/probe_routes.hpp"
-#include "server/request_context.hpp"
-#include "server/request_id.hpp"
-#include "server/routes.hpp"
+#include "server/http/compression.hpp"
+#include "server/http/method_policy.hpp"
+#include "server/http/probe_routes.hpp"
+#include "server/http/request_context.hpp"
+#include "server/http/request_id.hpp"
+#include "server/routes/routes.hpp"
 
 namespace lp::server {
 namespace {

@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <memory>
 
-#include "server/access_log.hpp"
 #include "server/app.hpp"
-#include "server/bearer_auth.hpp"
-#include "server/browser_policy.hpp"
-#include "server/http_transport.hpp"
-#include "server/router.hpp"
+#include "server/http/bearer_auth.hpp"
+#include "server/http/browser_policy.hpp"
+#include "server/http/http_transport.hpp"
+#include "server/http/router.hpp"
+#include "server/observability/access_log.hpp"
 
 namespace lp::server {
 
@@ -27,7 +27,7 @@ class Server {
   // New connections are refused and idle ones closed; a request that arrives on an open connection gets
   // 503 "shutting_down" (connection closed); requests in flight go on.
   void stop_accepting();
-  // Closes every connection at once (http_transport.hpp); run() returns once their threads are done.
+  // Closes every connection at once (http/http_transport.hpp); run() returns once their threads are done.
   void close_connections();
 
   const Router& router() const { return router_; }

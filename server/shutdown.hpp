@@ -2,7 +2,7 @@
 // What the server does on SIGTERM or SIGINT, in order:
 //  1. the transport refuses new requests; requests in flight are answered;
 //  2. queued renders become interrupted at once; running renders get --shutdown-grace-s to finish the
-//     pass they are in, and are halted after it; each keeps its state (render_job.hpp);
+//     pass they are in, and are halted after it; each keeps its state (renders/render_job.hpp);
 //  3. every render event stream sees its render end, sends its final `end` event and closes;
 //  4. the transport closes every connection.
 // The caller then exits 0.

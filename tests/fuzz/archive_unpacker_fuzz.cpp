@@ -10,8 +10,8 @@
 #include <filesystem>
 
 #include "fuzz_input.hpp"
-#include "server/archive_unpacker.hpp"
-#include "server/asset_folder.hpp"
+#include "server/assets/archive_unpacker.hpp"
+#include "server/assets/asset_folder.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "fuzz_input.hpp"
-#include "server/redis_client.hpp"
-#include "server/render_description.hpp"
-#include "server/render_keys.hpp"
+#include "server/scale_out/redis_client.hpp"
+#include "server/scale_out/redis_keys.hpp"
+#include "server/scale_out/render_description.hpp"
 
 namespace {
 

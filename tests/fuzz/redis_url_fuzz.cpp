@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "fuzz_input.hpp"
-#include "server/redis_url.hpp"
+#include "server/scale_out/redis_url.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

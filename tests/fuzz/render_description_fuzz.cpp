@@ -1,4 +1,4 @@
-// The render description a worker reads from Redis (server/render_description.hpp), on any text:
+// The render description a worker reads from Redis (server/scale_out/render_description.hpp), on any text:
 // std::invalid_argument is a clean refusal; a parsed description names bundles only by bundle hashes
 // and writes back to text that parses to the same description.
 // fuzz-dictionary: json.dict
@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "fuzz_input.hpp"
-#include "server/bundle_hash.hpp"
-#include "server/render_description.hpp"
+#include "server/scale_out/bundle_hash.hpp"
+#include "server/scale_out/render_description.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

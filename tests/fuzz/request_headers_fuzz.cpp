@@ -9,10 +9,10 @@
 #include <string>
 
 #include "fuzz_input.hpp"
-#include "server/bearer_auth.hpp"
-#include "server/compression.hpp"
-#include "server/conditional_get.hpp"
-#include "server/request_id.hpp"
+#include "server/http/bearer_auth.hpp"
+#include "server/http/compression.hpp"
+#include "server/http/conditional_get.hpp"
+#include "server/http/request_id.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <regex>
 #include <string>
 
-#include "server/compression.hpp"
+#include "server/http/compression.hpp"
 #include "support/http_reply.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"

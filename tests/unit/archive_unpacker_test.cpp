@@ -1,7 +1,7 @@
 // The asset archive unpacker and the model-file rule on archives built here and on the committed fuzz
 // corpus (its reproducers included), and asset mesh paths resolving to .glb and .gltf models in a real
 // state directory.
-#include "server/archive_unpacker.hpp"
+#include "server/assets/archive_unpacker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "api/api_error.hpp"
-#include "server/asset_folder.hpp"
-#include "server/mesh_paths.hpp"
-#include "server/stored_assets.hpp"
+#include "server/assets/asset_folder.hpp"
+#include "server/assets/mesh_paths.hpp"
+#include "server/assets/stored_assets.hpp"
 #include "support/archive_builder.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_data.hpp"

@@ -1,5 +1,5 @@
 // --auth-token-file: which files hold a usable token, and the comparison of tokens.
-#include "server/bearer_auth.hpp"
+#include "server/http/bearer_auth.hpp"
 
 #include <gtest/gtest.h>
 

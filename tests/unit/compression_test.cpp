@@ -1,6 +1,6 @@
 // Response compression and conditional GETs: which Accept-Encoding headers accept gzip, which types are
 // compressed, gzip's output read back by zlib, and If-None-Match matched by the weak comparison.
-#include "server/compression.hpp"
+#include "server/http/compression.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include <string>
 
 #include "api/openapi.hpp"
-#include "server/browser_policy.hpp"
-#include "server/conditional_get.hpp"
-#include "server/vary.hpp"
+#include "server/http/browser_policy.hpp"
+#include "server/http/conditional_get.hpp"
+#include "server/http/vary.hpp"
 
 namespace lp::server {
 namespace {

@@ -1,6 +1,6 @@
 // The HTTP worker pool grows while every worker is held by a long task, so a short task is never queued
 // behind long ones, and shrinks back to its base size once the long tasks end.
-#include "server/elastic_workers.hpp"
+#include "server/http/elastic_workers.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "engine/model/model_loader.hpp"
-#include "server/archive_unpacker.hpp"
-#include "server/bundle_archive.hpp"
-#include "server/bundle_hash.hpp"
-#include "server/mesh_bundles.hpp"
-#include "server/render_description.hpp"
+#include "server/assets/archive_unpacker.hpp"
+#include "server/scale_out/bundle_archive.hpp"
+#include "server/scale_out/bundle_hash.hpp"
+#include "server/scale_out/mesh_bundles.hpp"
+#include "server/scale_out/render_description.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 

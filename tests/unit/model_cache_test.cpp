@@ -1,7 +1,7 @@
 // The server's model cache on real files: a model is served from the cache while none of the files it
 // was read from has changed, and loaded again once one has (the model file, its material library or a
 // texture); its bytes are a cache entry of the memory budget; a preset's model is held in the budget once.
-#include "server/model_cache.hpp"
+#include "server/assets/model_cache.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The Prometheus text format writer: escapes, numbers and histograms written as the format specifies.
-#include "server/prometheus_text.hpp"
+#include "server/observability/prometheus_text.hpp"
 
 #include <gtest/gtest.h>
 

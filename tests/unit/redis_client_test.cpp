@@ -1,7 +1,7 @@
-// RedisClient (server/redis_client.hpp) against a real redis-server on loopback, and against a stand-in
-// for a broken or hostile Redis that answers with an array header of 344444444 elements (2.7 GB of
+// RedisClient (server/scale_out/redis_client.hpp) against a real redis-server on loopback, and against a
+// stand-in for a broken or hostile Redis that answers with an array header of 344444444 elements (2.7 GB of
 // element pointers, were the table allocated).
-#include "server/redis_client.hpp"
+#include "server/scale_out/redis_client.hpp"
 
 #include <arpa/inet.h>
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
-// parse_reply (server/redis_client.hpp): the Redis protocol's replies read as a connection reads them,
-// and arrays over kMaxRedisArrayElements refused before anything is allocated for them (a count the
+// parse_reply (server/scale_out/redis_client.hpp): the Redis protocol's replies read as a connection reads
+// them, and arrays over kMaxRedisArrayElements refused before anything is allocated for them (a count the
 // bytes cannot hold is no whole reply either).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "server/redis_client.hpp"
+#include "server/scale_out/redis_client.hpp"
 #include "support/test_data.hpp"
 
 namespace lp::server {

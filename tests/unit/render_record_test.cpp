@@ -1,6 +1,6 @@
 // A render's record in the state directory: it reads back as written, the sample ranges of a render
 // split over Redis among it, and a record whose ranges overlap or do not hold its samples is refused.
-#include "server/render_record.hpp"
+#include "server/renders/render_record.hpp"
 
 #include <gtest/gtest.h>
 

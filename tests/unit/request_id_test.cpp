@@ -1,6 +1,6 @@
 // Request ids: which ids a client may give, the ids the server makes, and api/openapi.yaml's schema of
 // them agreeing with both.
-#include "server/request_id.hpp"
+#include "server/http/request_id.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>

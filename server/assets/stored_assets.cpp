@@ -1,0 +1,134 @@
+#include "server/assets/stored_assets.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "api/api_error.hpp"
+#include "server/assets/asset_folder.hpp"
+#include "server/storage/data_dir.hpp"
+#include "server/storage/resource_name.hpp"
+
+namespace lp::server {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::system_clock;
+
+constexpr int kRecordVersion = 1;
+
+fs::path record_path(const StateStore& store, const std::string& name) {
+  return store.assets_dir() / (name + ".json");
+}
+
+StateStore& state_of(App& app) {
+  if (!app.state) throw api::ApiError(api::ErrorCode::Internal, "the server keeps no state directory");
+  return *app.state;
+}
+
+nlohmann::json record_of(const api::AssetInfo& info) {
+  return {{"version", kRecordVersion},
+          {"name", info.name},
+          {"model", info.model},
+          {"bytes", info.bytes},
+          {"files", info.files},
+          {"created_ms",
+           std::chrono::duration_cast<std::chrono::milliseconds>(info.created.time_since_epoch()).count()}};
+}
+
+void check_upload_size(const App& app, size_t bytes) {
+  if (bytes == 0)
+    throw api::ApiError(api::ErrorCode::EmptyBody,
+                        "the request body is empty: send a .glb file, or a zip or tar archive of a model");
+  const int64_t limit = app.options.max_asset_mb << 20;
+  if (int64_t(bytes) > limit)
+    throw api::ApiError(api::ErrorCode::TooLarge,
+                        fmt::format("the upload is {} bytes, more than --{} allows ({} MiB)", bytes,
+                                    api::kMaxAssetMb.flag, app.options.max_asset_mb));
+}
+
+api::AssetInfo restored_info(const StateStore& store, const nlohmann::json& record) {
+  if (record.at("version").get<int>() != kRecordVersion)
+    throw std::invalid_argument("unknown record version");
+  api::AssetInfo info{record.at("name").get<std::string>(), record.at("model").get<std::string>(),
+                      record.at("bytes").get<int64_t>(), record.at("files").get<int64_t>(),
+                      Clock::time_point(std::chrono::milliseconds(record.at("created_ms").get<int64_t>()))};
+  if (!valid_resource_name(info.name)) throw std::invalid_argument("not an asset name: '" + info.name + "'");
+  if (!is_model_file_name(info.model)) throw std::invalid_argument("not a model file: '" + info.model + "'");
+  const fs::path folder = asset_folder(store, info.name);
+  if (!fs::is_directory(fs::symlink_status(folder))) throw std::invalid_argument("its folder is missing");
+  resolve_inside(folder, info.model, "model", "the asset's folder");
+  return info;
+}
+
+// Folders of assets/ that no record names: an upload a crash cut short after its rename.
+void remove_unrecorded_folders(const StateStore& store) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(store.assets_dir(), ec)) {
+    if (!entry.is_directory() || fs::exists(record_path(store, entry.path().filename().string()))) continue;
+    spdlog::warn("state: removing {} (no record names it)", entry.path().string());
+    fs::remove_all(entry.path(), ec);
+  }
+}
+
+}  // namespace
+
+fs::path asset_folder(const StateStore& store, const std::string& name) {
+  return store.assets_dir() / name;
+}
+
+std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& name,
+                                                  std::span<const uint8_t> upload) {
+  StateStore& store = state_of(app);
+  const auto pending = app.assets.hold(name);
+  check_upload_size(app, upload.size());
+  // The body is held while it unpacks; the files go to disk through small buffers. (libarchive's index
+  // of a zip's central directory, a few times its size, is not counted: --max-asset-mb bounds it.)
+  const auto memory =
+      app.memory.reserve(int64_t(upload.size()), MemoryUse::Transient, "unpacking the asset '" + name + "'");
+  const ArchiveLimits limits{app.options.max_asset_mb << 20, app.options.max_asset_files};
+  StagedAsset staged(upload, asset_folder(store, name), limits);
+  const api::AssetInfo info{name, staged.files().model, staged.files().bytes, staged.files().files,
+                            Clock::now()};
+  std::lock_guard lock(store.assets_mutex());
+  staged.commit();
+  try {
+    store.write_record(record_path(store, name), record_of(info));
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(asset_folder(store, name), ignored);
+    throw;
+  }
+  spdlog::info("stored asset '{}' ({}, {} files, {} bytes)", name, info.model, info.files, info.bytes);
+  return pending->add(info);
+}
+
+bool remove_asset(App& app, const std::string& name) {
+  StateStore& store = state_of(app);
+  std::lock_guard lock(store.assets_mutex());
+  if (!app.assets.remove(name)) return false;
+  store.remove(record_path(store, name));  // the record first: without it the folder is a leftover
+  std::error_code ec;
+  fs::remove_all(asset_folder(store, name), ec);
+  if (ec) spdlog::warn("state: cannot remove the files of asset '{}': {}", name, ec.message());
+  return true;
+}
+
+void restore_assets(App& app) {
+  const StateStore& store = *app.state;
+  int restored = 0;
+  for (const auto& [path, record] : store.read_records(store.assets_dir())) {
+    try {
+      const api::AssetInfo info = restored_info(store, record);
+      if (path.filename() != info.name + ".json")
+        throw std::invalid_argument("the file name is not the asset's");
+      app.assets.hold(info.name)->add(info);
+      ++restored;
+    } catch (const std::exception& e) {
+      spdlog::warn("state: skipping asset {}: {}", path.string(), e.what());
+    }
+  }
+  remove_unrecorded_folders(store);
+  spdlog::info("state: {} asset(s) restored", restored);
+}
+
+}  // namespace lp::server

@@ -1,0 +1,24 @@
+#include "server/http/request_context.hpp"
+
+#include <atomic>
+
+namespace lp::server {
+
+RequestContext& current_request() {
+  thread_local RequestContext context;
+  return context;
+}
+
+void begin_request_context(std::string accept_encoding) {
+  RequestContext& r = current_request();
+  static std::atomic<uint64_t> arrivals{0};
+  r.start = std::chrono::steady_clock::now();
+  r.arrival = arrivals.fetch_add(1, std::memory_order_relaxed);
+  r.id.clear();
+  r.route.clear();
+  r.accept_encoding = std::move(accept_encoding);
+  r.caching = Caching::None;
+  r.if_none_match.clear();
+}
+
+}  // namespace lp::server

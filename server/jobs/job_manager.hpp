@@ -1,0 +1,88 @@
+#pragma once
+// Runs background jobs: a bounded FIFO queue, a fixed number of runner threads, each running one job at a
+// time inside its own tbb::task_arena (so concurrent jobs share the cores fairly: oneTBB divides its
+// workers between the arenas, and the runners only wait: job_arena.hpp), and a bounded list of finished
+// jobs kept for their results (oldest dropped). Thread-safe. The destructor cancels every job and joins the
+// runners.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "api/parameters.hpp"
+#include "server/jobs/job.hpp"
+#include "server/jobs/thread_priority.hpp"
+
+namespace lp::server {
+
+struct JobManagerConfig {
+  int max_running = int(api::kMaxRunningJobs.fallback);  // runner threads = jobs running at once
+  int max_queued = int(api::kMaxQueuedJobs.fallback);  // jobs waiting for a runner (beyond the idle runners)
+  int max_finished = int(api::kMaxFinishedJobs.fallback);           // finished jobs kept
+  int64_t max_finished_bytes = api::kMaxFinishedMb.fallback << 20;  // and the results they keep
+  int arena_concurrency = 0;                                        // threads per job arena; 0 = all cores
+  RenderPriority render_priority = RenderPriority::Low;             // of the threads that render
+};
+
+class JobManager {
+ public:
+  explicit JobManager(const JobManagerConfig& config);
+  ~JobManager();
+  JobManager(const JobManager&) = delete;
+  JobManager& operator=(const JobManager&) = delete;
+
+  // A fresh random id (16 hex digits).
+  std::string new_id();
+
+  // Queues the job; false if max_running + max_queued jobs are already queued or running, or the manager
+  // is shutting down. A job with the id of an ended job replaces it (a resumed run).
+  bool submit(std::shared_ptr<Job> job);
+  // Adds a job that ended in an earlier run of the server (restored from the state directory).
+  void restore(std::shared_ptr<Job> job);
+
+  std::shared_ptr<Job> find(const std::string& id) const;  // nullptr if unknown (or dropped)
+  std::vector<std::shared_ptr<Job>> list() const;          // oldest first
+
+  enum class CancelOutcome { NotFound, Cancelled, Cancelling, Removed };
+  // A queued job is cancelled at once, a running one is asked to stop (it stops at its next check),
+  // a finished one is removed.
+  CancelOutcome cancel_or_remove(const std::string& id);
+
+  // Seconds a client should wait before retrying a full queue: an estimate of when the running job
+  // closest to the end finishes, clamped to [1, 60].
+  int retry_after_s() const;
+
+  // Refuses later submissions, interrupts the queued jobs, asks the running ones to stop at their next
+  // safe point, halts those still running after `grace`, and joins the runners. Idempotent.
+  void shutdown(std::chrono::milliseconds grace = {});
+
+  int queued_count() const;
+  int running_count() const;
+
+ private:
+  void runner_loop(int runner);
+  void retire(const std::shared_ptr<Job>& job);         // adds to the finished list and drops the oldest
+  void drop_finished(const std::shared_ptr<Job>& job);  // takes an ended job out of the finished list
+  void forget(const std::shared_ptr<Job>& job);         // and lets it delete what it keeps
+  std::shared_ptr<Job> next_job();                      // blocks; nullptr when stopping
+
+  const JobManagerConfig config_;
+  mutable std::mutex mutex_;
+  std::condition_variable work_cv_;
+  bool stopping_ = false;
+  std::map<std::string, std::shared_ptr<Job>> jobs_;  // all known jobs, by id
+  std::deque<std::shared_ptr<Job>> queue_;
+  std::vector<std::shared_ptr<Job>> running_;
+  std::deque<std::shared_ptr<Job>> finished_;  // oldest first
+  int64_t finished_bytes_ = 0;
+  uint64_t id_state_;
+  std::vector<std::jthread> runners_;
+};
+
+}  // namespace lp::server

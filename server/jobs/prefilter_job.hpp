@@ -1,0 +1,48 @@
+#pragma once
+// A prefiltered specular chain as a background job (engine/prefilter): progress in texel samples,
+// checked for a cancel or a shutdown before every row, and the chain kept in memory once done, its
+// bytes held in the memory budget until the job is dropped. Nothing is kept across restarts: a chain
+// is a pure function of the map and the request, made again by a new job. So a job queued, running or
+// done answers a second request of the same map content (its fingerprint) and the same parameters.
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "api/prefilter_request.hpp"
+#include "engine/core/memory_budget.hpp"
+#include "engine/envmap/envmap.hpp"
+#include "engine/prefilter/prefilter_chain.hpp"
+#include "server/jobs/job.hpp"
+
+namespace lp::server {
+
+class PrefilterJob : public Job {
+ public:
+  // `memory` holds prefilter_working_bytes of the map and the request; it shrinks to the chain at the end.
+  PrefilterJob(std::string id, std::string envmap_name, std::shared_ptr<const EnvMap> envmap,
+               std::string envmap_fingerprint, api::PrefilterRequest request, MemoryReservation memory);
+
+  const api::PrefilterRequest& request() const { return request_; }
+  // Whether this job makes, or made, the chain `request` asks of a map of `envmap_fingerprint`: the same
+  // map content and every parameter the same, and the job queued, running (no cancel asked) or done.
+  bool answers(const std::string& envmap_fingerprint, const api::PrefilterRequest& request) const;
+  std::shared_ptr<const PrefilteredChain> chain() const;  // null until done
+  int64_t retained_bytes() const override;
+
+ protected:
+  bool run() override;
+  void describe(nlohmann::json& out) const override;
+  void ending(JobStatus status, const std::optional<JobError>& error) override;
+
+ private:
+  const std::string envmap_name_;
+  const std::string envmap_fingerprint_;
+  const api::PrefilterRequest request_;
+  std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
+  MemoryReservation memory_;
+
+  mutable std::mutex mutex_;
+  std::shared_ptr<const PrefilteredChain> chain_;
+};
+
+}  // namespace lp::server

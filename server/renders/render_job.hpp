@@ -1,0 +1,108 @@
+#pragma once
+// A render as a background job: builds the renderer, then renders progressive passes (1, 1, 2, 4, ...
+// samples per pixel, capped: render::render_passes) so a valid image exists after the first pass. Progress
+// counts pixel samples per finished tile; the image and the statistics are published after every pass, and
+// with a state store the job keeps its record and image there after every pass, so a restart can continue it.
+// Split over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
+// the image as each range is merged and keeps it every few seconds.
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "api/render_request.hpp"
+#include "engine/envmap/envmap.hpp"
+#include "engine/image/image.hpp"
+#include "engine/render/pass_schedule.hpp"
+#include "engine/render/renderer.hpp"
+#include "server/jobs/job.hpp"
+#include "server/renders/render_counters.hpp"
+#include "server/renders/render_record.hpp"
+#include "server/scale_out/scale_out.hpp"
+#include "server/storage/state_store.hpp"
+
+namespace lp::server {
+
+struct RenderImage {
+  std::shared_ptr<const Image> image;  // the mean of the finished passes; nullptr before the first
+  int spp_done = 0;                    // samples per pixel in it
+};
+
+class RenderJob : public Job {
+ public:
+  // `record` is a fresh one for a new render, or the record of an earlier run to continue (then `image`
+  // is its mean image over record.spp_done samples per pixel). `envmap` may be null for a job that has
+  // ended; `store` null keeps nothing.
+  RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
+            std::shared_ptr<const Image> image, StateStore* store);
+
+  RenderImage image() const;
+  int spp_done() const;
+  const api::RenderRequest& request() const { return request_; }
+  RenderRecord record() const;
+  RenderRecord record(JobStatus status, const std::optional<JobError>& error) const;
+  int64_t retained_bytes() const override;
+  // The job's reservation in the memory budget (see render_memory.hpp); it shrinks to the kept image
+  // when the job ends. Set before the job is submitted.
+  void hold_memory(MemoryReservation memory) { memory_ = std::move(memory); }
+  // The server's counters the job adds each finished pass to. Set before the job is submitted.
+  void count_in(RenderCounters* counters) { counters_ = counters; }
+  // Splits the render into work items on Redis (render_coordinator.hpp) instead of rendering it here.
+  // Set before the job is submitted.
+  void split_over(std::optional<ScaleOut> scale_out) { scale_out_ = std::move(scale_out); }
+
+  void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
+  void save_record(JobStatus status, const std::optional<JobError>& error) const;
+  void delete_state() const;  // removes the record and the image from the store, for good
+
+ protected:
+  bool run() override;
+  void describe(nlohmann::json& out) const override;
+  void ending(JobStatus status, const std::optional<JobError>& error) override {
+    keep_result_memory();
+    save_record(status, error);
+  }
+  void forgotten() override { delete_state(); }
+
+ private:
+  bool render_here();
+  bool render_split();
+  bool render_ranges_here();
+  // The ranges done and the film holding them, from the image of an earlier run.
+  std::vector<render::SampleRange> done_ranges() const;
+  render::PartialFilm done_film() const;
+  // What a merged range changes: the ranges done, the image, the statistics and, every few seconds,
+  // the stored image.
+  struct RangeRun;
+  void merged(RangeRun& run, const render::PartialFilm& film, render::SampleRange range, uint64_t rays);
+  // The image over `spp_done` samples per pixel (in `ranges_done` when they are not [0, spp_done)), and
+  // what this run traced for it in `render_s`.
+  void publish(Image image, int spp_done, render::RenderStats run_stats, double render_s,
+               std::vector<render::SampleRange> ranges_done = {});
+  void checkpoint();
+  void keep_result_memory();  // the image of the passes done, then the record naming it
+  int skip_done_passes(std::vector<render::RenderPass>& passes) const;
+
+  const api::RenderRequest request_;
+  const nlohmann::json request_json_;
+  std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
+  StateStore* const store_;
+  RenderCounters* counters_ = nullptr;
+  std::optional<ScaleOut> scale_out_;
+  const render::RenderStats earlier_stats_;  // of earlier runs
+  const double earlier_render_s_;
+
+  mutable std::mutex mutex_;
+  std::shared_ptr<const Image> image_;
+  int spp_done_ = 0;
+  std::vector<render::SampleRange> ranges_done_;  // see RenderRecord::ranges_done
+  render::RenderStats stats_;
+  double render_s_ = 0;  // time spent in passes (not building the scene), for the rates
+  std::string image_file_, envmap_fingerprint_;
+
+  MemoryReservation memory_;
+
+  mutable std::mutex store_mutex_;  // one write at a time; none after delete_state()
+  mutable bool deleted_ = false;
+};
+
+}  // namespace lp::server

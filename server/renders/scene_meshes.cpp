@@ -1,0 +1,43 @@
+#include "server/renders/scene_meshes.hpp"
+
+#include <fmt/format.h>
+
+#include <variant>
+
+#include "api/api_error.hpp"
+#include "engine/core/error.hpp"
+#include "server/assets/mesh_paths.hpp"
+
+namespace lp::server {
+
+int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
+  return resolve_meshes(scene, app, [&app](size_t, const std::string& path, const std::string& field) {
+    return resolve_mesh_path(app, path, field);
+  });
+}
+
+int64_t resolve_meshes(render::SceneDesc& scene, App& app, const MeshLocator& locate) {
+  int64_t triangles = 0;
+  const ModelLimits limits = api::model_limits(app.options.limits);
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape);
+    if (!mesh) continue;
+    if (mesh->model) {
+      app.models.hold_builtin(mesh->model, "the " + mesh->path.string() + " preset's model");
+    } else {
+      const std::string field = fmt::format("scene.objects[{}].path", i);
+      mesh->path = locate(i, mesh->path.string(), field);
+      try {
+        mesh->model = app.models.get(mesh->path, limits);
+      } catch (const MemoryBudgetError&) {
+        throw;
+      } catch (const Error& e) {
+        throw api::invalid_field(field, e.what());
+      }
+    }
+    triangles += int64_t(mesh->model->triangle_count());
+  }
+  return triangles;
+}
+
+}  // namespace lp::server

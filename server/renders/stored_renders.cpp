@@ -1,0 +1,144 @@
+#include "server/renders/stored_renders.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "api/api_error.hpp"
+#include "engine/image/image_io.hpp"
+#include "server/maps/envmap_fingerprint.hpp"
+#include "server/renders/render_memory.hpp"
+#include "server/renders/scene_meshes.hpp"
+
+namespace lp::server {
+namespace {
+
+// The mean image a record names, or null if it names none or the file is unusable (logged).
+std::shared_ptr<const Image> read_record_image(const StateStore& store, const RenderRecord& record,
+                                               const api::RenderRequest& request) {
+  if (record.image_file.empty()) return nullptr;
+  const auto& s = request.settings;
+  try {
+    ImageLimits limits;
+    limits.max_pixels = int64_t{s.width} * s.height;
+    auto decoded = read_image_file(store.renders_dir() / record.image_file, limits);
+    if (decoded.image.width() != s.width || decoded.image.height() != s.height)
+      throw std::runtime_error("its size is not the render's");
+    return std::make_shared<const Image>(std::move(decoded.image));
+  } catch (const std::exception& e) {
+    spdlog::warn("state: render {}: cannot use {}: {}", record.id, record.image_file, e.what());
+    return nullptr;
+  }
+}
+
+std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
+  const auto request = api::parse_render_request(record.request, app.options.limits);
+  const JobStatus status = is_finished(record.status) ? record.status : JobStatus::Interrupted;
+  // The image stays with the job, so it is held from the budget like a finished render's.
+  MemoryReservation memory;
+  if (!record.image_file.empty())
+    memory = app.memory.reserve(EnvMap::image_bytes(request.settings.width, request.settings.height),
+                                MemoryUse::Held, fmt::format("the image of render {}", record.id));
+  auto image = read_record_image(*app.state, record, request);
+  if (!image) {
+    memory = {};
+    if (status != JobStatus::Interrupted && record.spp_done > 0)
+      throw std::runtime_error("its image is unusable");
+    record.spp_done = 0;  // an interrupted render without a usable image starts over
+    record.image_file.clear();
+  }
+  auto job =
+      std::make_shared<RenderJob>(std::move(record), request, nullptr, std::move(image), app.state.get());
+  job->hold_memory(std::move(memory));
+  job->restore_ended(status, job->error());
+  return job;
+}
+
+api::ApiError cannot_resume(const RenderJob& job, api::ErrorCode code, const std::string& why) {
+  return api::ApiError(code, fmt::format("render '{}' cannot resume: {}", job.id(), why));
+}
+
+}  // namespace
+
+void restore_renders(App& app) {
+  std::vector<RenderRecord> records;
+  for (const auto& [path, json] : app.state->read_records(app.state->renders_dir())) {
+    try {
+      auto record = parse_render_record(json);
+      if (path.filename() != record.id + ".json") throw std::invalid_argument("its id is not its file name");
+      records.push_back(std::move(record));
+    } catch (const std::exception& e) {
+      spdlog::warn("state: skipping {}: {}", path.string(), e.what());
+    }
+  }
+  std::stable_sort(records.begin(), records.end(),
+                   [](const auto& a, const auto& b) { return a.created < b.created; });
+  std::vector<std::shared_ptr<RenderJob>> interrupted;
+  size_t restored = 0;
+  for (auto& record : records) {
+    const std::string id = record.id;
+    try {
+      auto job = restore_render(app, std::move(record));
+      if (job->status() == JobStatus::Interrupted) {
+        job->save_record();
+        interrupted.push_back(job);
+      }
+      app.renders.restore(job);
+      ++restored;
+    } catch (const std::exception& e) {
+      spdlog::warn("state: skipping render {}: {}", id, e.what());
+    }
+  }
+  spdlog::info("state: {} render job(s) restored, {} interrupted", restored, interrupted.size());
+  if (!app.options.resume_interrupted) return;
+  for (const auto& job : interrupted) {
+    try {
+      if (!resume_render(app, job)) spdlog::warn("render {} not resumed: the queue is full", job->id());
+    } catch (const std::exception& e) {
+      spdlog::warn("render {} not resumed: {}", job->id(), e.what());
+    }
+  }
+}
+
+std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
+  if (job->status() != JobStatus::Interrupted)
+    throw cannot_resume(*job, api::ErrorCode::NotInterrupted,
+                        fmt::format("it is {}; only interrupted renders resume", enum_name(job->status())));
+  RenderRecord record = job->record();
+  api::RenderRequest request;
+  int64_t triangles = 0;
+  try {
+    request = api::parse_render_request(record.request, app.options.limits);
+    triangles = resolve_meshes(request.scene, app);
+  } catch (const api::ApiError& e) {
+    throw cannot_resume(*job, api::ErrorCode::CannotResume, e.what());
+  }
+  const auto envmap = app.envmaps.find(request.envmap);
+  if (!envmap)
+    throw cannot_resume(
+        *job, api::ErrorCode::EnvmapMissing,
+        fmt::format("no map '{}' is loaded; load it under that name and retry", request.envmap));
+  if (record.spp_done > 0 && envmap_fingerprint(*envmap->map) != record.envmap_fingerprint)
+    throw cannot_resume(
+        *job, api::ErrorCode::EnvmapChanged,
+        fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
+  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
+  auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
+                                          job->image().image, app.state.get());
+  next->hold_memory(std::move(memory));
+  next->count_in(&app.render_counters);
+  next->split_over(scale_out(app.options, app.bundles));
+  next->save_record();
+  if (!app.renders.submit(next)) {
+    if (app.renders.find(job->id()) != job)
+      throw cannot_resume(*job, api::ErrorCode::NotInterrupted, "it was resumed already");
+    job->save_record();
+    return nullptr;
+  }
+  spdlog::info("render {} resumed after {} spp", next->id(), next->spp_done());
+  return next;
+}
+
+}  // namespace lp::server

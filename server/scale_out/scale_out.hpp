@@ -1,0 +1,25 @@
+#pragma once
+// How this server splits its renders over machines (--redis): where Redis is, the size of a work item,
+// and where workers fetch this server's maps and mesh bundles. None without --redis.
+#include <optional>
+#include <string>
+
+#include "server/options.hpp"
+#include "server/scale_out/mesh_bundles.hpp"
+#include "server/scale_out/redis_url.hpp"
+
+namespace lp::server {
+
+struct ScaleOut {
+  RedisAddress redis;
+  int item_spp = 0;
+  std::string advertise_url;       // http://HOST:PORT of this server, for GET /api/v1/content/{hash}
+  MeshBundles* bundles = nullptr;  // where a render publishes its scene's mesh bundles
+};
+
+inline std::optional<ScaleOut> scale_out(const Options& o, MeshBundles& bundles) {
+  if (!o.redis || o.role == ServerRole::Worker) return std::nullopt;
+  return ScaleOut{*o.redis, o.redis_item_spp, o.advertise_url, &bundles};
+}
+
+}  // namespace lp::server
