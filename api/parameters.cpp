@@ -206,43 +206,6 @@ void add_projection_parameters(std::vector<Doc>& d) {
 
 }  // namespace
 
-const std::vector<const IntParameter*>& int_parameters() {
-  static const std::vector<const IntParameter*> all = {&kPort,
-                                                       &kThreads,
-                                                       &kMaxUploadMb,
-                                                       &kMaxPixels,
-                                                       &kMaxSamples,
-                                                       &kMaxEnvmaps,
-                                                       &kMaxLights,
-                                                       &kMaxAssets,
-                                                       &kMaxAssetMb,
-                                                       &kMaxAssetFiles,
-                                                       &kMaxMemoryMb,
-                                                       &kMaxRenderWidth,
-                                                       &kMaxRenderHeight,
-                                                       &kMaxRenderSpp,
-                                                       &kMaxRenderDepth,
-                                                       &kMaxRenderObjects,
-                                                       &kMaxMeshTriangles,
-                                                       &kMaxTexturePixels,
-                                                       &kMaxModelTexturePixels,
-                                                       &kMaxRunningJobs,
-                                                       &kMaxQueuedJobs,
-                                                       &kMaxFinishedJobs,
-                                                       &kMaxFinishedMb,
-                                                       &kMaxEventStreams,
-                                                       &kMaxConnections,
-                                                       &kMaxConnectionsPerClient,
-                                                       &kHeaderTimeoutS,
-                                                       &kIoTimeoutS,
-                                                       &kKeepAliveTimeoutS,
-                                                       &kShutdownGraceS,
-                                                       &kAccessLogSample,
-                                                       &kRedisItemSpp,
-                                                       &kRedisClaimTimeoutS};
-  return all;
-}
-
 std::vector<DocumentedParameter> documented_parameters() {
   std::vector<Doc> d;
   add_enum_parameters(d);

@@ -58,8 +58,7 @@ Image render(const SceneRender& scene, bool progress) {
   const std::atomic<bool> never{false};
   for (const render::RenderPass& pass : render::render_passes(r.settings, r.settings.spp)) {
     const auto on_tile = [&bar, spp = pass.spp] { bar.advance(spp); };
-    pass.adaptive ? renderer.render_adaptive_pass(pass.spp, never, on_tile)
-                  : renderer.render_pass(pass.spp, never, on_tile);
+    renderer.render(pass, never, on_tile);
   }
   bar.finish();
   return renderer.image();

@@ -18,18 +18,21 @@
 namespace lp::server {
 
 inline JobManagerConfig render_job_config(const Options& o) {
-  return {o.max_running_jobs,      o.max_queued_jobs, o.max_finished_jobs,
-          o.max_finished_mb << 20, o.threads,         o.render_priority};
+  JobManagerConfig config = o.jobs;
+  config.arena_concurrency = o.threads;
+  return config;
 }
 
 // Prefilters run one at a time (each takes every core its arena has), queued and kept as renders are.
 inline JobManagerConfig prefilter_job_config(const Options& o) {
-  return {1, o.max_queued_jobs, o.max_finished_jobs, o.max_finished_mb << 20, o.threads, o.render_priority};
+  JobManagerConfig config = render_job_config(o);
+  config.max_running = 1;
+  return config;
 }
 
 // The render arenas a server may have working at once: a render job's, a prefilter's, a Redis worker's.
-inline int render_arenas(const Options& o) {
-  const bool worker = o.redis && o.role != ServerRole::Api;
+inline int job_arenas(const Options& o) {
+  const bool worker = o.scale_out.redis && o.scale_out.role != ServerRole::Api;
   return render_job_config(o).max_running + prefilter_job_config(o).max_running + (worker ? 1 : 0);
 }
 
@@ -59,7 +62,7 @@ struct App {
         memory(options.max_memory_mb << 20),
         decoding(decoding_budget_bytes(options)),
         envmaps(options.max_envmaps),
-        assets(options.max_assets),
+        assets(options.assets.max_assets),
         models(memory),
         prefilters(prefilter_job_config(options)),
         renders(render_job_config(options)) {}

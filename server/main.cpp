@@ -118,11 +118,11 @@ int main(int argc, char** argv) {
   }
   if (!options) return 0;
   if (!options->health_check_url.empty()) return lp::server::run_health_check(options->health_check_url);
-  lp::server::Logging logging(options->log_level, options->log_format);
+  lp::server::Logging logging(options->log.level, options->log.format);
   // Render arenas run on workers alone (jobs/job_arena.hpp): the limit counts them and one caller.
   const tbb::global_control threads(
       tbb::global_control::max_allowed_parallelism,
-      lp::server::RenderArena::render_workers(options->threads, lp::server::render_arenas(*options)) + 1);
+      lp::server::JobArena::worker_threads(options->threads, lp::server::job_arenas(*options)) + 1);
 
   lp::server::App app(*options);
   lp::server::Server server(app);
@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
   }
   int port = 0;
   if (!prepare(app, server, port)) return 1;
-  if (app.options.advertise_url.empty())
-    app.options.advertise_url = fmt::format("http://{}:{}", options->host, port);
+  if (app.options.scale_out.advertise_url.empty())
+    app.options.scale_out.advertise_url = fmt::format("http://{}:{}", options->host, port);
   std::optional<lp::server::RenderWorker> worker;  // with --redis, unless --role api
 
   std::promise<void> run_returned;
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   std::atomic<bool> loaded{false}, failed{false};
   std::thread loading([&] {
     failed = !load(app);
-    if (!failed && app.options.redis && app.options.role != lp::server::ServerRole::Api)
+    if (!failed && app.options.scale_out.redis && app.options.scale_out.role != lp::server::ServerRole::Api)
       worker.emplace(app, lp::server::worker_name());
     loaded = true;
     if (failed) pthread_kill(signals.native_handle(), SIGTERM);  // stops the server, exit status 1

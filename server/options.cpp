@@ -3,12 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <functional>
 #include <iostream>
 #include <stdexcept>
-#include <type_traits>
 
+#include "server/flag_parser.hpp"
 #include "server/health_check.hpp"
 #include "server/http/bearer_auth.hpp"
 #include "server/observability/log_level.hpp"
@@ -38,10 +36,7 @@ command line wins over its variable; an empty variable counts as unset; a repeat
 comma-separated list, a switch's 1, true, yes or 0, false, no. The variables:
 )";
 
-constexpr size_t kHelpWidth = 110;
-constexpr size_t kNameColumn = 21;
-
-// A flag that is not an integer of api/parameters: a value of its own kind, or a switch.
+// A flag that takes text or is a switch.
 struct TextFlag {
   const char* name;   // without the dashes
   const char* value;  // what it takes, as --help shows it ("ADDR"); nullptr for a switch
@@ -62,32 +57,23 @@ void set_state_dir(Options& o, const std::string& v) {
   o.state_dir = v;
 }
 
-// The value of an enum flag, by the names of its enum_entries.
-template <class E>
-E enum_value(const char* flag, const std::string& v) {
-  const auto value = parse_enum<E>(v);
-  if (!value)
-    throw std::invalid_argument(
-        fmt::format("--{} takes one of {}, got '{}'", flag, enum_names_joined<E>("|"), v));
-  return *value;
-}
-
 void set_log_format(Options& o, const std::string& v) {
-  o.log_format = enum_value<LogFormat>("log-format", v);
+  o.log.format = parse_enum_flag<LogFormat>("log-format", v);
 }
 
 void set_render_priority(Options& o, const std::string& v) {
-  o.render_priority = enum_value<RenderPriority>("render-priority", v);
+  o.jobs.render_priority = parse_enum_flag<RenderPriority>("render-priority", v);
 }
 
 void set_role(Options& o, const std::string& v) {
-  o.role = enum_value<ServerRole>("role", v);
+  o.scale_out.role = parse_enum_flag<ServerRole>("role", v);
 }
 
 // A server of one role only splits jobs with others, through Redis.
 void check_role(const Options& o) {
-  if (o.role != ServerRole::Both && !o.redis)
-    throw std::invalid_argument(fmt::format("--role {} needs --redis redis://HOST:PORT", enum_name(o.role)));
+  const ScaleOutConfig& s = o.scale_out;
+  if (s.role != ServerRole::Both && !s.redis)
+    throw std::invalid_argument(fmt::format("--role {} needs --redis redis://HOST:PORT", enum_name(s.role)));
 }
 
 const std::vector<TextFlag>& text_flags() {
@@ -97,11 +83,11 @@ const std::vector<TextFlag>& text_flags() {
       {"allowed-host", "NAME",
        "a Host header name to answer besides loopback and --host (repeatable); others\nget 403 (a "
        "defence against DNS rebinding)",
-       true, [](Options& o, const std::string& v) { o.allowed_hosts.push_back(v); }},
+       true, [](Options& o, const std::string& v) { o.browser.allowed_hosts.push_back(v); }},
       {"cors-origin", "ORIGIN",
        "an origin (http://host:port, or *) whose pages may call the API (repeatable);\nwithout it, "
        "requests that change state from another origin get 403",
-       true, [](Options& o, const std::string& v) { o.cors_origins.push_back(v); }},
+       true, [](Options& o, const std::string& v) { o.browser.cors_origins.push_back(v); }},
       {"auth-token-file", "FILE",
        "when given, every API route but /api/v1/health and /api/v1/ready, and /metrics,\nneed "
        "Authorization: Bearer TOKEN, the token FILE holds (others get 401)",
@@ -131,7 +117,7 @@ const std::vector<TextFlag>& text_flags() {
       {"redis", "URL",
        "redis://HOST[:PORT]: split renders into work items of sample ranges on Redis\nStreams, rendered by "
        "every server of that Redis (see --role)",
-       false, [](Options& o, const std::string& v) { o.redis = parse_redis_url(v); }},
+       false, [](Options& o, const std::string& v) { o.scale_out.redis = parse_redis_url(v); }},
       {"role", "NAME",
        enum_names_joined<ServerRole>("|") +
            " with --redis: accept renders and merge their items, render items, or\nboth (default both)",
@@ -139,9 +125,9 @@ const std::vector<TextFlag>& text_flags() {
       {"advertise-url", "URL",
        "with --redis, where workers fetch this server's maps (default\nhttp://HOST:PORT of --host and the "
        "port)",
-       false, [](Options& o, const std::string& v) { o.advertise_url = v; }},
+       false, [](Options& o, const std::string& v) { o.scale_out.advertise_url = v; }},
       {"log-level", "NAME", "least severe messages written: " + log_level_names() + " (default info)", false,
-       [](Options& o, const std::string& v) { o.log_level = parse_log_level(v); }},
+       [](Options& o, const std::string& v) { o.log.level = parse_log_level(v); }},
       {"log-format", "NAME",
        enum_names_joined<LogFormat>("|") +
            ": lines for people, or one JSON object a line (time, level, message; access\nlines also "
@@ -151,203 +137,82 @@ const std::vector<TextFlag>& text_flags() {
   return flags;
 }
 
-// An integer flag: its declaration and where its value goes.
+// An integer flag: its declaration (with the subsystem that owns it) and where its value goes.
 struct IntFlag {
   const api::IntParameter* parameter;
   void (*set)(Options&, int64_t);
 };
 
-template <auto Member>
-IntFlag option(const api::IntParameter& p) {
-  return {&p, [](Options& o, int64_t v) {
-            o.*Member = static_cast<std::remove_reference_t<decltype(o.*Member)>>(v);
-          }};
-}
-
-template <auto Member>
-IntFlag request_limit(const api::IntParameter& p) {
-  return {&p, [](Options& o, int64_t v) { o.limits.*Member = v; }};
-}
-
+// In --help order.
 const std::vector<IntFlag>& int_flags() {
+  using S = std::chrono::seconds;
   static const std::vector<IntFlag> flags = {
-      option<&Options::port>(api::kPort),
-      option<&Options::threads>(api::kThreads),
-      option<&Options::max_upload_mb>(api::kMaxUploadMb),
-      request_limit<&api::RequestLimits::max_pixels>(api::kMaxPixels),
-      request_limit<&api::RequestLimits::max_samples>(api::kMaxSamples),
-      option<&Options::max_envmaps>(api::kMaxEnvmaps),
-      request_limit<&api::RequestLimits::max_lights>(api::kMaxLights),
-      option<&Options::max_assets>(api::kMaxAssets),
-      option<&Options::max_asset_mb>(api::kMaxAssetMb),
-      option<&Options::max_asset_files>(api::kMaxAssetFiles),
-      option<&Options::max_memory_mb>(api::kMaxMemoryMb),
-      request_limit<&api::RequestLimits::max_render_width>(api::kMaxRenderWidth),
-      request_limit<&api::RequestLimits::max_render_height>(api::kMaxRenderHeight),
-      request_limit<&api::RequestLimits::max_render_spp>(api::kMaxRenderSpp),
-      request_limit<&api::RequestLimits::max_render_depth>(api::kMaxRenderDepth),
-      request_limit<&api::RequestLimits::max_render_objects>(api::kMaxRenderObjects),
-      request_limit<&api::RequestLimits::max_mesh_triangles>(api::kMaxMeshTriangles),
-      request_limit<&api::RequestLimits::max_texture_pixels>(api::kMaxTexturePixels),
-      request_limit<&api::RequestLimits::max_model_texture_pixels>(api::kMaxModelTexturePixels),
-      option<&Options::max_running_jobs>(api::kMaxRunningJobs),
-      option<&Options::max_queued_jobs>(api::kMaxQueuedJobs),
-      option<&Options::max_finished_jobs>(api::kMaxFinishedJobs),
-      option<&Options::max_finished_mb>(api::kMaxFinishedMb),
-      option<&Options::max_event_streams>(api::kMaxEventStreams),
-      option<&Options::max_connections>(api::kMaxConnections),
-      option<&Options::max_connections_per_client>(api::kMaxConnectionsPerClient),
-      option<&Options::header_timeout_s>(api::kHeaderTimeoutS),
-      option<&Options::io_timeout_s>(api::kIoTimeoutS),
-      option<&Options::keep_alive_timeout_s>(api::kKeepAliveTimeoutS),
-      option<&Options::shutdown_grace_s>(api::kShutdownGraceS),
-      option<&Options::access_log_sample>(api::kAccessLogSample),
-      option<&Options::redis_item_spp>(api::kRedisItemSpp),
-      option<&Options::redis_claim_timeout_s>(api::kRedisClaimTimeoutS),
+      {&kPort, [](Options& o, int64_t v) { o.port = int(v); }},
+      {&api::kThreads, [](Options& o, int64_t v) { o.threads = int(v); }},
+      {&kMaxUploadMb, [](Options& o, int64_t v) { o.transport.max_body = uint64_t(v) << 20; }},
+      {&api::kMaxPixels, [](Options& o, int64_t v) { o.limits.max_pixels = v; }},
+      {&api::kMaxSamples, [](Options& o, int64_t v) { o.limits.max_samples = v; }},
+      {&kMaxEnvmaps, [](Options& o, int64_t v) { o.max_envmaps = v; }},
+      {&api::kMaxLights, [](Options& o, int64_t v) { o.limits.max_lights = v; }},
+      {&kMaxAssets, [](Options& o, int64_t v) { o.assets.max_assets = v; }},
+      {&kMaxAssetMb, [](Options& o, int64_t v) { o.assets.max_asset_mb = v; }},
+      {&kMaxAssetFiles, [](Options& o, int64_t v) { o.assets.max_asset_files = v; }},
+      {&kMaxMemoryMb, [](Options& o, int64_t v) { o.max_memory_mb = v; }},
+      {&api::kMaxRenderWidth, [](Options& o, int64_t v) { o.limits.max_render_width = v; }},
+      {&api::kMaxRenderHeight, [](Options& o, int64_t v) { o.limits.max_render_height = v; }},
+      {&api::kMaxRenderSpp, [](Options& o, int64_t v) { o.limits.max_render_spp = v; }},
+      {&api::kMaxRenderDepth, [](Options& o, int64_t v) { o.limits.max_render_depth = v; }},
+      {&api::kMaxRenderObjects, [](Options& o, int64_t v) { o.limits.max_render_objects = v; }},
+      {&api::kMaxMeshTriangles, [](Options& o, int64_t v) { o.limits.max_mesh_triangles = v; }},
+      {&api::kMaxTexturePixels, [](Options& o, int64_t v) { o.limits.max_texture_pixels = v; }},
+      {&api::kMaxModelTexturePixels, [](Options& o, int64_t v) { o.limits.max_model_texture_pixels = v; }},
+      {&kMaxRunningJobs, [](Options& o, int64_t v) { o.jobs.max_running = int(v); }},
+      {&kMaxQueuedJobs, [](Options& o, int64_t v) { o.jobs.max_queued = int(v); }},
+      {&kMaxFinishedJobs, [](Options& o, int64_t v) { o.jobs.max_finished = int(v); }},
+      {&kMaxFinishedMb, [](Options& o, int64_t v) { o.jobs.max_finished_bytes = v << 20; }},
+      {&kMaxEventStreams, [](Options& o, int64_t v) { o.max_event_streams = int(v); }},
+      {&kMaxConnections, [](Options& o, int64_t v) { o.transport.max_connections = int(v); }},
+      {&kMaxConnectionsPerClient,
+       [](Options& o, int64_t v) { o.transport.max_connections_per_client = int(v); }},
+      {&kHeaderTimeoutS, [](Options& o, int64_t v) { o.transport.header_timeout = S(v); }},
+      {&kIoTimeoutS, [](Options& o, int64_t v) { o.transport.io_timeout = S(v); }},
+      {&kKeepAliveTimeoutS, [](Options& o, int64_t v) { o.transport.keep_alive_timeout = S(v); }},
+      {&kShutdownGraceS, [](Options& o, int64_t v) { o.shutdown_grace_s = int(v); }},
+      {&kAccessLogSample, [](Options& o, int64_t v) { o.log.access_log_sample = v; }},
+      {&kRedisItemSpp, [](Options& o, int64_t v) { o.scale_out.item_spp = int(v); }},
+      {&kRedisClaimTimeoutS, [](Options& o, int64_t v) { o.scale_out.claim_timeout_s = int(v); }},
   };
   return flags;
 }
 
-// The flag of every declared integer parameter (api::int_parameters(), in that order).
-const IntFlag& int_flag(const api::IntParameter& p) {
-  for (const IntFlag& f : int_flags())
-    if (f.parameter == &p) return f;
-  throw std::logic_error(fmt::format("--{} is declared but sets no option", p.flag));
-}
-
-int64_t parse_count(const std::string& flag, const std::string& value, Range<int64_t> range) {
-  try {
-    size_t used = 0;
-    const long long v = std::stoll(value, &used);
-    if (used == value.size() && range.contains(v)) return v;
-  } catch (const std::exception&) {
-  }
-  throw std::invalid_argument(
-      fmt::format("{} takes an integer in [{}, {}], got '{}'", flag, range.min, range.max, value));
-}
-
-// Any flag that sets an option, text or integer, as the parser, the environment and --help see it.
-struct Flag {
-  std::string name;   // without the dashes
-  std::string usage;  // "--name VALUE"
-  std::string help;
-  bool takes_value;
-  bool repeatable;
-  std::function<void(Options&, const std::string&)> set;
-};
-
-const std::vector<Flag>& flags() {
-  static const std::vector<Flag> all = [] {
-    std::vector<Flag> out;
-    for (const TextFlag& f : text_flags())
-      out.push_back({f.name, f.value ? fmt::format("--{} {}", f.name, f.value) : fmt::format("--{}", f.name),
-                     f.help, f.value != nullptr, f.repeatable, f.set});
-    for (const api::IntParameter* p : api::int_parameters()) {
-      const std::string fallback = p->default_text ? p->default_text : std::to_string(p->fallback);
-      const IntFlag& f = int_flag(*p);
-      out.push_back({p->flag, fmt::format("--{} N", p->flag),
-                     fmt::format("{} (default {})", p->help, fallback), true, false,
-                     [&f, p](Options& o, const std::string& v) {
-                       f.set(o, parse_count(fmt::format("--{}", p->flag), v, p->range));
-                     }});
-    }
-    return out;
-  }();
-  return all;
-}
-
-// "  --name VALUE           first line of help" and the help's further lines under its first.
-std::string help_entry(const std::string& usage, const std::string& help) {
-  const std::string indent(2 + kNameColumn + 2, ' ');
-  std::string out;
-  size_t start = 0;
-  for (size_t end = 0; end != std::string::npos; start = end + 1) {
-    end = help.find('\n', start);
-    const std::string line = help.substr(start, end == std::string::npos ? end : end - start);
-    if (start > 0)
-      out += indent + line + "\n";
-    else if (usage.size() > kNameColumn)
-      out += fmt::format("  {}\n{}{}\n", usage, indent, line);
-    else
-      out += fmt::format("  {:{}}  {}\n", usage, kNameColumn, line);
+// Every flag that sets an option, the text flags first, each setting its option in `o`.
+std::vector<Flag> flags_of(Options& o) {
+  std::vector<Flag> out;
+  for (const TextFlag& f : text_flags())
+    out.push_back({f.name, f.value ? f.value : "", f.help, f.repeatable,
+                   [&o, set = f.set](const std::string& v) { set(o, v); }});
+  for (const IntFlag& f : int_flags()) {
+    const api::IntParameter& p = *f.parameter;
+    const std::string fallback = p.default_text ? p.default_text : std::to_string(p.fallback);
+    out.push_back(
+        {p.flag, "N", fmt::format("{} (default {})", p.help, fallback), false,
+         [&o, &p, set = f.set](const std::string& v) { set(o, parse_integer_flag(p.flag, v, p.range)); }});
   }
   return out;
 }
 
-// The variables, as many on a line as fit in the help's width.
-std::string environment_list() {
-  std::string out;
-  size_t column = 0;
-  for (const Flag& f : flags()) {
-    const std::string name = environment_variable(f.name);
-    if (column > 0 && column + 1 + name.size() > kHelpWidth) {
-      out += '\n';
-      column = 0;
-    }
-    out += column == 0 ? "  " : " ";
-    out += name;
-    column += (column == 0 ? 2 : 1) + name.size();
-  }
-  return out + '\n';
-}
-
-// The text flags, the actions, then the numbers (flags() lists the text flags first).
+// The text flags, the actions, then the numbers.
 std::string usage() {
+  Options unused;
+  const std::vector<Flag> flags = flags_of(unused);
   std::string out = kUsageHead;
-  for (size_t i = 0; i < flags().size(); ++i) {
+  for (size_t i = 0; i < flags.size(); ++i) {
     if (i == text_flags().size())
       out += fmt::format(fmt::runtime(kActions), fmt::arg("health_timeout", kHealthCheckTimeout.count())) +
              "\nNumbers:\n";
-    out += help_entry(flags()[i].usage, flags()[i].help);
+    out += help_entry(flags[i].usage(), flags[i].help);
   }
-  return out + kEnvironmentHead + environment_list();
-}
-
-const Flag* find_flag(const std::string& arg) {
-  for (const Flag& f : flags())
-    if (arg == "--" + f.name) return &f;
-  return nullptr;
-}
-
-// A switch's variable: on or off.
-bool switch_value(const std::string& flag, const std::string& value) {
-  for (const char* on : {"1", "true", "yes"})
-    if (value == on) return true;
-  for (const char* off : {"0", "false", "no"})
-    if (value == off) return false;
-  throw std::invalid_argument(
-      fmt::format("--{} is a switch: 1, true, yes or 0, false, no, got '{}'", flag, value));
-}
-
-// "a, b,c" -> {"a", "b", "c"}: a repeatable flag's variable.
-std::vector<std::string> list_items(const std::string& value) {
-  std::vector<std::string> items;
-  size_t start = 0;
-  for (size_t end = 0; end != std::string::npos; start = end + 1) {
-    end = value.find(',', start);
-    std::string item = value.substr(start, end == std::string::npos ? end : end - start);
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    if (!item.empty()) items.push_back(std::move(item));
-  }
-  return items;
-}
-
-void set_from_environment(Options& o, const Flag& flag, const Environment& environment) {
-  const std::string name = environment_variable(flag.name);
-  const auto value = environment(name);
-  if (!value || value->empty()) return;
-  try {
-    if (!flag.takes_value) {
-      if (switch_value(flag.name, *value)) flag.set(o, "");
-    } else if (flag.repeatable) {
-      for (const std::string& item : list_items(*value)) flag.set(o, item);
-    } else {
-      flag.set(o, *value);
-    }
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(fmt::format("{} (from {})", e.what(), name));
-  }
+  return out + kEnvironmentHead + environment_list(flags);
 }
 
 }  // namespace
@@ -356,56 +221,42 @@ int64_t default_max_memory_mb() {
   return std::max<int64_t>(1, machine_memory_bytes() / 2 >> 20);
 }
 
-Environment process_environment() {
-  return [](const std::string& name) -> std::optional<std::string> {
-    const char* value = std::getenv(name.c_str());
-    return value ? std::optional<std::string>(value) : std::nullopt;
-  };
+std::vector<const api::IntParameter*> int_flag_parameters() {
+  std::vector<const api::IntParameter*> out;
+  for (const IntFlag& f : int_flags()) out.push_back(f.parameter);
+  return out;
 }
 
 void load_auth_token(Options& options) {
   if (options.auth_token_file) options.auth_token = read_auth_token(*options.auth_token_file);
 }
 
-std::string environment_variable(std::string_view flag) {
-  std::string name = "LIGHTPROBE_";
-  for (const char c : flag) name += c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
-  return name;
-}
-
 std::optional<Options> parse_options(int argc, char** argv, Options defaults,
                                      const Environment& environment) {
   Options o = std::move(defaults);
-  std::vector<std::pair<const Flag*, std::string>> given;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << usage();
-      return std::nullopt;
-    }
-    if (arg == "--version") {
-      std::cout << "lightprobe-server " << LIGHTPROBE_VERSION << "\n";
-      return std::nullopt;
-    }
-    if (arg == "--list-routes") {
-      o.list_routes = true;
-      continue;
-    }
-    if (arg == "--health-check") {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-      o.health_check_url = argv[++i];
-      parse_health_check_url(o.health_check_url);  // a malformed URL is a bad flag
-      continue;
-    }
-    const Flag* flag = find_flag(arg);
-    if (!flag) throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
-    if (flag->takes_value && i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-    given.emplace_back(flag, flag->takes_value ? argv[++i] : "");
-  }
-  for (const Flag& f : flags())
-    if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == &f; }))
-      set_from_environment(o, f, environment);
-  for (const auto& [flag, value] : given) flag->set(o, value);
+  const std::vector<Action> actions = {
+      {{"--help", "-h"},
+       false,
+       [](const std::string&) {
+         std::cout << usage();
+         return false;
+       }},
+      {{"--version"},
+       false,
+       [](const std::string&) {
+         std::cout << "lightprobe-server " << LIGHTPROBE_VERSION << "\n";
+         return false;
+       }},
+      {{"--list-routes"}, false, [&o](const std::string&) { return o.list_routes = true; }},
+      {{"--health-check"},
+       true,
+       [&o](const std::string& url) {
+         parse_health_check_url(url);  // a malformed URL is a bad flag
+         o.health_check_url = url;
+         return true;
+       }},
+  };
+  if (!parse_command_line(argc, argv, flags_of(o), actions, environment)) return std::nullopt;
   check_role(o);
   return o;
 }

@@ -1,86 +1,78 @@
 #pragma once
-// Command-line options of lightprobe-server.
-#include <spdlog/common.h>
-
+// Command-line options of lightprobe-server: the process's own, and the configuration of each subsystem,
+// declared with the subsystem together with the flags of its numbers and composed here. The flags, their
+// variables and --help: options.cpp over flag_parser.hpp.
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "api/parameters.hpp"
-#include "server/jobs/thread_priority.hpp"
-#include "server/observability/log_format.hpp"
-#include "server/scale_out/redis_url.hpp"
-#include "server/scale_out/server_role.hpp"
+#include "server/assets/asset_limits.hpp"
+#include "server/flag_parser.hpp"
+#include "server/http/browser_policy_config.hpp"
+#include "server/http/transport_limits.hpp"
+#include "server/jobs/job_manager_config.hpp"
+#include "server/maps/envmap_registry.hpp"
+#include "server/observability/log_config.hpp"
+#include "server/renders/event_streams.hpp"
+#include "server/scale_out/scale_out_config.hpp"
 
 namespace lp::server {
+
+inline constexpr api::IntParameter kPort{
+    "port", 8080, {0, 65535}, "port (0 picks a free port, printed on start)"};
+inline constexpr api::IntParameter kMaxMemoryMb{
+    "max-memory-mb",
+    0,
+    {1, int64_t{1} << 30},
+    "MiB for maps, their sampling tables and caches, images in flight and render results; past it, caches "
+    "are evicted, then requests get 503 or 507",
+    "half the machine's memory, or of its cgroup limit"};
+inline constexpr api::IntParameter kShutdownGraceS{
+    "shutdown-grace-s", 10, {0, 3600}, "on SIGTERM/SIGINT, seconds running renders get to finish their pass"};
 
 // Half the memory of the machine (or of its cgroup limit).
 int64_t default_max_memory_mb();
 
-// Numeric defaults, ranges and help come from api/parameters.hpp.
 struct Options {
+  // The process: where it listens, what it serves and keeps, and how it stops.
   std::string host = "127.0.0.1";
-  std::vector<std::string> allowed_hosts;  // --allowed-host: Host names answered besides loopback and --host
-  std::vector<std::string> cors_origins;   // --cors-origin: other origins that may call the API ("*": any)
-  std::optional<std::filesystem::path> auth_token_file;  // --auth-token-file
-  std::string auth_token;               // read from it by load_auth_token(); empty: the API needs no token
-  int port = int(api::kPort.fallback);  // 0 = any free port (printed on start)
+  int port = int(kPort.fallback);  // 0 = any free port (printed on start)
+  std::optional<std::filesystem::path> auth_token_file;
+  std::string auth_token;  // read from it by load_auth_token(); empty: the API needs no token
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
   std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)
   int threads = int(api::kThreads.fallback);               // 0 = all cores
-  int64_t max_upload_mb = api::kMaxUploadMb.fallback;
-  int64_t max_envmaps = api::kMaxEnvmaps.fallback;
-  int64_t max_assets = api::kMaxAssets.fallback;
-  int64_t max_asset_mb = api::kMaxAssetMb.fallback;  // an upload, and its unpacked files together
-  int64_t max_asset_files = api::kMaxAssetFiles.fallback;
-  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles, --max-*texture-pixels
-  api::RequestLimits limits;
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
   int64_t max_memory_mb = default_max_memory_mb();
-  spdlog::level::level_enum log_level = spdlog::level::info;  // least severe messages written
-  LogFormat log_format = LogFormat::Text;
-  int64_t access_log_sample = api::kAccessLogSample.fallback;  // log 1 request in N (0: none; 5xx always)
+  int64_t max_envmaps = kMaxEnvmaps.fallback;
+  int max_event_streams = int(kMaxEventStreams.fallback);  // concurrent GET .../events streams
+  std::filesystem::path state_dir = "lightprobe-state";    // relative to the working directory
+  bool resume_interrupted = false;                         // resume interrupted renders at start
+  int shutdown_grace_s = int(kShutdownGraceS.fallback);
   bool list_routes = false;      // print "METHOD PATH" per registered route and exit
-  std::string health_check_url;  // --health-check: probe this URL and exit (server/health_check.hpp)
-  // Render jobs (POST /api/v1/renders).
-  int max_running_jobs = int(api::kMaxRunningJobs.fallback);
-  int max_queued_jobs = int(api::kMaxQueuedJobs.fallback);
-  int max_finished_jobs = int(api::kMaxFinishedJobs.fallback);
-  int64_t max_finished_mb = api::kMaxFinishedMb.fallback;       // images kept by finished jobs
-  RenderPriority render_priority = RenderPriority::Low;         // of the threads that render
-  int max_event_streams = int(api::kMaxEventStreams.fallback);  // concurrent GET .../events streams
-  // Connections (server/http/http_transport.hpp).
-  int max_connections = int(api::kMaxConnections.fallback);
-  int max_connections_per_client = int(api::kMaxConnectionsPerClient.fallback);
-  int header_timeout_s = int(api::kHeaderTimeoutS.fallback);
-  int io_timeout_s = int(api::kIoTimeoutS.fallback);
-  int keep_alive_timeout_s = int(api::kKeepAliveTimeoutS.fallback);
-  // Lifecycle: what survives a restart, and how a stop ends the work in flight.
-  std::filesystem::path state_dir = "lightprobe-state";  // relative to the working directory
-  bool resume_interrupted = false;                       // resume interrupted renders at start
-  int shutdown_grace_s = int(api::kShutdownGraceS.fallback);
-  // Renders split over machines through Redis (server/scale_out/scale_out.hpp).
-  std::optional<RedisAddress> redis;  // --redis; none: renders run in this process
-  ServerRole role = ServerRole::Both;
-  std::string advertise_url;  // where workers fetch maps from this server; empty: http://--host:port
-  int redis_item_spp = int(api::kRedisItemSpp.fallback);
-  int redis_claim_timeout_s = int(api::kRedisClaimTimeoutS.fallback);
+  std::string health_check_url;  // --health-check: probe this URL and exit (health_check.hpp)
+
+  // The subsystems'.
+  BrowserPolicyConfig browser;  // --allowed-host, --cors-origin
+  TransportLimits transport;    // --max-connections..., --max-upload-mb
+  // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles, --max-*texture-pixels
+  api::RequestLimits limits;
+  AssetLimits assets;        // --max-assets, --max-asset-mb, --max-asset-files
+  JobManagerConfig jobs;     // render jobs: --max-*-jobs, --max-finished-mb, --render-priority
+  LogConfig log;             // --log-level, --log-format, --access-log-sample
+  ScaleOutConfig scale_out;  // --redis, --role, --advertise-url, --redis-*
 };
+
+// Every integer flag's declaration, in --help order.
+std::vector<const api::IntParameter*> int_flag_parameters();
 
 // Reads the token of --auth-token-file, if set, into auth_token; throws std::invalid_argument if it cannot.
 void load_auth_token(Options& options);
-
-// The value of an environment variable, nullopt when it is unset.
-using Environment = std::function<std::optional<std::string>(const std::string& name)>;
-Environment process_environment();
-
-// The variable that sets a flag: "max-pixels" -> "LIGHTPROBE_MAX_PIXELS".
-std::string environment_variable(std::string_view flag);
 
 // Parses argv over `defaults`, each flag not on the command line taken from its variable in `environment`
 // (an empty variable counts as unset). Returns nullopt after printing --help or --version (exit 0);

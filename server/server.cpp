@@ -12,25 +12,12 @@
 #include "server/routes/routes.hpp"
 
 namespace lp::server {
-namespace {
-
-TransportLimits transport_limits(const Options& o) {
-  return {o.max_connections,
-          o.max_connections_per_client,
-          std::chrono::seconds(o.header_timeout_s),
-          std::chrono::seconds(o.io_timeout_s),
-          std::chrono::seconds(o.keep_alive_timeout_s),
-          uint64_t(o.max_upload_mb) << 20};
-}
-
-}  // namespace
-
 Server::Server(App& app)
     : app_(app),
-      http_(transport_limits(app.options)),
+      http_(app.options.transport),
       router_(http_),
-      access_log_(app.options.access_log_sample, app.options.log_format),
-      browser_(app.options),
+      access_log_(app.options.log.access_log_sample, app.options.log.format),
+      browser_(app.options.host, app.options.browser),
       auth_(app.options.auth_token) {
   http_.set_keep_alive_max_count(1000);
 

@@ -233,6 +233,12 @@ bool Renderer::render_pass(int spp, const std::atomic<bool>& cancel, const std::
   return true;
 }
 
+bool Renderer::render(const RenderPass& pass, const std::atomic<bool>& cancel,
+                      const std::function<void()>& on_tile) {
+  return pass.adaptive ? render_adaptive_pass(pass.spp, cancel, on_tile)
+                       : render_pass(pass.spp, cancel, on_tile);
+}
+
 bool Renderer::render_adaptive_pass(int spp, const std::atomic<bool>& cancel,
                                     const std::function<void()>& on_tile) {
   if (spp < 1) throw Error(ErrorKind::InvalidArgument, "render_adaptive_pass: spp must be >= 1");

@@ -11,6 +11,7 @@
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
 #include "engine/render/partial_film_codec.hpp"
+#include "engine/render/pass_schedule.hpp"
 #include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
@@ -46,6 +47,8 @@ class Renderer {
   // render_pass (a finished warm-up stays in the image). Throws InvalidArgument after resume(): a
   // restored mean image has no deviations. render_range() and resume() are uniform only.
   bool render_adaptive_pass(int spp, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
+  // One pass of render_passes(): render_adaptive_pass or render_pass as it says.
+  bool render(const RenderPass& pass, const std::atomic<bool>& cancel, const std::function<void()>& on_tile);
 
   // Renders the samples [range.first, range.end) of every pixel into a partial film of their own (the
   // image and spp_done() stay as they are): the samples a run of uniform passes draws at those indices, so

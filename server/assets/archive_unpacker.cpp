@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "api/api_error.hpp"
-#include "api/parameters.hpp"
+#include "server/assets/asset_limits.hpp"
 #include "server/storage/atomic_file.hpp"
 
 namespace lp::server {
@@ -94,7 +94,7 @@ class Unpacker {
       if (r != ARCHIVE_OK && r != ARCHIVE_WARN) header_failed();
       if (++members_ > limits_.max_members)
         throw ApiError(ErrorCode::TooLarge, fmt::format("the archive holds more than {} members (--{})",
-                                                        limits_.max_members, api::kMaxAssetFiles.flag));
+                                                        limits_.max_members, kMaxAssetFiles.flag));
       unpack(entry);
     }
     return std::move(files_);
@@ -144,7 +144,7 @@ class Unpacker {
       total_ += n;
       if (total_ > limits_.max_bytes)
         throw ApiError(ErrorCode::TooLarge, fmt::format("the archive unpacks to more than {} bytes (--{})",
-                                                        limits_.max_bytes, api::kMaxAssetMb.flag));
+                                                        limits_.max_bytes, kMaxAssetMb.flag));
       file.write({block.data(), size_t(n)});
       bytes += n;
     }

@@ -39,11 +39,11 @@ void check_upload_size(const App& app, size_t bytes) {
   if (bytes == 0)
     throw api::ApiError(api::ErrorCode::EmptyBody,
                         "the request body is empty: send a .glb file, or a zip or tar archive of a model");
-  const int64_t limit = app.options.max_asset_mb << 20;
+  const int64_t limit = app.options.assets.max_asset_mb << 20;
   if (int64_t(bytes) > limit)
     throw api::ApiError(api::ErrorCode::TooLarge,
                         fmt::format("the upload is {} bytes, more than --{} allows ({} MiB)", bytes,
-                                    api::kMaxAssetMb.flag, app.options.max_asset_mb));
+                                    kMaxAssetMb.flag, app.options.assets.max_asset_mb));
 }
 
 api::AssetInfo restored_info(const StateStore& store, const nlohmann::json& record) {
@@ -85,7 +85,7 @@ std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& n
   // of a zip's central directory, a few times its size, is not counted: --max-asset-mb bounds it.)
   const auto memory =
       app.memory.reserve(int64_t(upload.size()), MemoryUse::Transient, "unpacking the asset '" + name + "'");
-  const ArchiveLimits limits{app.options.max_asset_mb << 20, app.options.max_asset_files};
+  const ArchiveLimits limits = app.options.assets.archive();
   StagedAsset staged(upload, asset_folder(store, name), limits);
   const api::AssetInfo info{name, staged.files().model, staged.files().bytes, staged.files().files,
                             Clock::now()};

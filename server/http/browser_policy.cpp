@@ -48,13 +48,13 @@ constexpr const char* kExposedHeaders =
 
 }  // namespace
 
-BrowserPolicy::BrowserPolicy(const Options& options)
-    : hosts_{"localhost", "127.0.0.1", "::1"}, cors_origins_(options.cors_origins) {
-  std::string bound = lower(options.host);
+BrowserPolicy::BrowserPolicy(const std::string& host, const BrowserPolicyConfig& config)
+    : hosts_{"localhost", "127.0.0.1", "::1"}, cors_origins_(config.cors_origins) {
+  std::string bound = lower(host);
   if (bound.starts_with('[') && bound.ends_with(']')) bound = bound.substr(1, bound.size() - 2);
   any_ip_literal_ = bound.empty() || bound == "0.0.0.0" || bound == "::";
   if (!any_ip_literal_) hosts_.push_back(bound);
-  for (const auto& name : options.allowed_hosts) hosts_.push_back(host_name(name));
+  for (const auto& name : config.allowed_hosts) hosts_.push_back(host_name(name));
 }
 
 bool BrowserPolicy::host_allowed(const std::string& host) const {

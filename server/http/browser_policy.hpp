@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "api/api_error.hpp"
+#include "server/http/browser_policy_config.hpp"
 #include "server/http/router.hpp"
-#include "server/options.hpp"
 
 namespace lp::server {
 
@@ -21,7 +21,8 @@ inline constexpr int kPreflightMaxAgeS = 600;
 
 class BrowserPolicy {
  public:
-  explicit BrowserPolicy(const Options& options);
+  // `host`: the address the server listens on (--host).
+  BrowserPolicy(const std::string& host, const BrowserPolicyConfig& config);
 
   // The refusal for a request (403 host_not_allowed / origin_not_allowed, 400 missing_host), if any.
   std::optional<api::ApiError> refusal(const httplib::Request& req) const;

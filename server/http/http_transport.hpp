@@ -24,17 +24,9 @@
 
 #include "server/http/connection_table.hpp"
 #include "server/http/elastic_workers.hpp"
+#include "server/http/transport_limits.hpp"
 
 namespace lp::server {
-
-struct TransportLimits {
-  int max_connections = 0;
-  int max_connections_per_client = 0;
-  std::chrono::seconds header_timeout{0};      // from the start of a request to the end of its head
-  std::chrono::seconds io_timeout{0};          // longest wait of a body read or a response write
-  std::chrono::seconds keep_alive_timeout{0};  // idle time between requests
-  uint64_t max_body = 0;                       // bytes
-};
 
 class HttpTransport : public httplib::Server {
  public:

@@ -6,14 +6,14 @@
 
 namespace lp::server {
 
-RenderArena::RenderArena(int concurrency, RenderPriority priority)
+JobArena::JobArena(int concurrency, RenderPriority priority)
     : arena_(concurrency > 0 ? concurrency : tbb::info::default_concurrency(), 0,
              tbb::task_arena::priority::low) {
   arena_.initialize();
   lowered_.emplace(arena_, priority);
 }
 
-std::size_t RenderArena::render_workers(int threads, int arenas) {
+std::size_t JobArena::worker_threads(int threads, int arenas) {
   return std::size_t(threads > 0 ? threads : tbb::info::default_concurrency()) *
          std::size_t(std::max(1, arenas));
 }

@@ -6,7 +6,7 @@
 //
 // Fair shares: the caller does not join the arena, it hands the work over and waits, and the process has
 // enough oneTBB workers for every arena it may have working at once to get all of its threads
-// (render_workers). Each running job then has the same number of threads and the OS shares the cores
+// (worker_threads). Each running job then has the same number of threads and the OS shares the cores
 // evenly between them. A caller that joined would add a thread of its own to its job: of two renders on
 // two cores with one worker, one had two threads and the other one, and a third got none.
 #include <oneapi/tbb/task_arena.h>
@@ -20,12 +20,12 @@
 
 namespace lp::server {
 
-class RenderArena {
+class JobArena {
  public:
   // `concurrency` threads, all cores when 0 or less.
-  RenderArena(int concurrency, RenderPriority priority);
-  RenderArena(const RenderArena&) = delete;
-  RenderArena& operator=(const RenderArena&) = delete;
+  JobArena(int concurrency, RenderPriority priority);
+  JobArena(const JobArena&) = delete;
+  JobArena& operator=(const JobArena&) = delete;
 
   // Runs `f` on the arena's workers and waits for it; an exception it throws is rethrown here.
   template <class F>
@@ -44,7 +44,7 @@ class RenderArena {
 
   // The oneTBB worker threads a process needs for `arenas` arenas of `threads` threads (0: one per
   // core) each to run at once.
-  static std::size_t render_workers(int threads, int arenas);
+  static std::size_t worker_threads(int threads, int arenas);
 
  private:
   tbb::task_arena arena_;

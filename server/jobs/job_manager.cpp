@@ -154,7 +154,7 @@ std::shared_ptr<Job> JobManager::next_job() {
 }
 
 void JobManager::runner_loop(int runner) {
-  RenderArena arena(config_.arena_concurrency, config_.render_priority);
+  JobArena arena(config_.arena_concurrency, config_.render_priority);
   while (auto job = next_job()) {
     spdlog::debug("runner {} takes job {}", runner, job->id());
     arena.execute([&] { job->execute(); });

@@ -15,20 +15,10 @@
 #include <thread>
 #include <vector>
 
-#include "api/parameters.hpp"
 #include "server/jobs/job.hpp"
-#include "server/jobs/thread_priority.hpp"
+#include "server/jobs/job_manager_config.hpp"
 
 namespace lp::server {
-
-struct JobManagerConfig {
-  int max_running = int(api::kMaxRunningJobs.fallback);  // runner threads = jobs running at once
-  int max_queued = int(api::kMaxQueuedJobs.fallback);  // jobs waiting for a runner (beyond the idle runners)
-  int max_finished = int(api::kMaxFinishedJobs.fallback);           // finished jobs kept
-  int64_t max_finished_bytes = api::kMaxFinishedMb.fallback << 20;  // and the results they keep
-  int arena_concurrency = 0;                                        // threads per job arena; 0 = all cores
-  RenderPriority render_priority = RenderPriority::Low;             // of the threads that render
-};
 
 class JobManager {
  public:

@@ -7,7 +7,7 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "engine/image/image_io.hpp"
+#include "api/render_schema.hpp"
 #include "engine/render/pass_schedule.hpp"
 #include "server/maps/envmap_fingerprint.hpp"
 #include "server/renders/render_coordinator.hpp"
@@ -15,12 +15,13 @@
 namespace lp::server {
 
 RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
-                     std::shared_ptr<const Image> image, StateStore* store)
+                     std::shared_ptr<const Image> image, RenderJobContext context)
     : Job(record.id, record.created, record.elapsed_s),
       request_(std::move(request)),
       request_json_(std::move(record.request)),
       envmap_(std::move(envmap)),
-      store_(store),
+      counters_(context.counters),
+      scale_out_(std::move(context.scale_out)),
       earlier_stats_(record.stats),
       earlier_render_s_(record.render_s),
       image_(std::move(image)),
@@ -28,8 +29,9 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       ranges_done_(image_ ? record.ranges_done : std::vector<render::SampleRange>{}),
       stats_(record.stats),
       render_s_(record.render_s),
-      image_file_(image_ ? record.image_file : ""),
-      envmap_fingerprint_(record.envmap_fingerprint) {
+      envmap_fingerprint_(record.envmap_fingerprint),
+      memory_(std::move(context.memory)),
+      files_(context.store, record.id, image_ ? record.image_file : "") {
   set_work(request_.settings.spp, spp_done_);  // until run() counts in tiles
 }
 
@@ -68,31 +70,11 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   std::lock_guard lock(mutex_);
   r.spp_done = spp_done_;
   r.ranges_done = ranges_done_;
-  r.image_file = image_file_;
+  r.image_file = files_.image_file();
   r.envmap_fingerprint = envmap_fingerprint_;
   r.stats = stats_;
   r.render_s = render_s_;
   return r;
-}
-
-void RenderJob::save_record(JobStatus status, const std::optional<JobError>& error) const {
-  if (!store_) return;
-  std::lock_guard lock(store_mutex_);
-  if (deleted_) return;
-  try {
-    store_->write_record(store_->renders_dir() / (id() + ".json"), record_json(record(status, error)));
-  } catch (const std::exception& e) {
-    spdlog::error("render {}: cannot save its record: {}", id(), e.what());
-  }
-}
-
-void RenderJob::delete_state() const {
-  if (!store_) return;
-  std::lock_guard lock(store_mutex_);
-  deleted_ = true;
-  store_->remove(store_->renders_dir() / (id() + ".json"));
-  std::lock_guard image_lock(mutex_);
-  if (!image_file_.empty()) store_->remove(store_->renders_dir() / image_file_);
 }
 
 void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, double render_s,
@@ -110,22 +92,13 @@ void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, d
 }
 
 void RenderJob::checkpoint() {
-  if (!store_) return;
+  if (!files_.keeps()) return;
   const RenderImage current = image();
-  const std::string file = fmt::format("{}.{}.exr", id(), current.spp_done);
-  std::string previous;
-  try {
-    const auto fingerprint = envmap_fingerprint(*envmap_);
-    store_->write_bytes(store_->renders_dir() / file, write_exr(*current.image, ExrCompression::None));
-    std::lock_guard lock(mutex_);
-    previous = std::exchange(image_file_, file);
-    envmap_fingerprint_ = fingerprint;
-  } catch (const std::exception& e) {
-    spdlog::error("render {}: cannot save its image: {}", id(), e.what());
-    return;
-  }
-  save_record();
-  if (!previous.empty() && previous != file) store_->remove(store_->renders_dir() / previous);
+  RenderRecord kept = record();
+  kept.envmap_fingerprint = envmap_fingerprint(*envmap_);
+  if (!files_.save_image(*current.image, current.spp_done, kept)) return;
+  std::lock_guard lock(mutex_);
+  envmap_fingerprint_ = kept.envmap_fingerprint;
 }
 
 // Drops the passes an earlier run finished; returns the samples per pixel they hold. An adaptive render
@@ -193,10 +166,7 @@ bool RenderJob::render_here() {
   int spp_done = earlier_spp;  // the passes' samples per pixel (an adaptive pass's are a mean)
   for (const render::RenderPass& pass : passes) {
     const auto on_tile = [this, spp = pass.spp] { add_work_done(spp); };
-    if (interrupt_requested() ||
-        !(pass.adaptive ? renderer.render_adaptive_pass(pass.spp, cancel_flag(), on_tile)
-                        : renderer.render_pass(pass.spp, cancel_flag(), on_tile)))
-      return false;
+    if (interrupt_requested() || !renderer.render(pass, cancel_flag(), on_tile)) return false;
     spp_done += pass.spp;
     publish(renderer.image(), spp_done, renderer.stats(),
             std::chrono::duration<double>(Clock::now() - start).count());
@@ -291,27 +261,8 @@ bool RenderJob::render_ranges_here() {
 }
 
 void RenderJob::describe(nlohmann::json& out) const {
-  const auto& s = request_.settings;
   std::lock_guard lock(mutex_);
-  out["spp_done"] = spp_done_;
-  out["spp"] = s.spp;
-  out["width"] = s.width;
-  out["height"] = s.height;
-  out["max_depth"] = s.max_depth;
-  out["seed"] = s.seed;
-  out["mipmaps"] = s.mipmaps;
-  out["normal_maps"] = s.normal_maps;
-  out["sampling"] = enum_name(s.sampling);
-  out["envmap"] = request_.envmap;
-  out["scene"] = request_.preset ? nlohmann::json{{"preset", *request_.preset}}
-                                 : nlohmann::json{{"objects", request_.scene.objects.size()}};
-  out["lighting_mode"] = enum_name(request_.lighting.mode);
-  out["lighting_sun"] = enum_name(request_.lighting.sun);
-  out["samples"] = stats_.samples;
-  out["rays"] = stats_.rays;
-  out["samples_per_s"] = render_s_ > 0 ? double(stats_.samples) / render_s_ : 0.0;
-  out["rays_per_s"] = render_s_ > 0 ? double(stats_.rays) / render_s_ : 0.0;
-  out["image_available"] = image_ != nullptr;
+  api::describe_render(out, request_, {spp_done_, stats_, render_s_, image_ != nullptr});
 }
 
 }  // namespace lp::server

@@ -16,6 +16,7 @@
 #include "engine/render/renderer.hpp"
 #include "server/jobs/job.hpp"
 #include "server/renders/render_counters.hpp"
+#include "server/renders/render_files.hpp"
 #include "server/renders/render_record.hpp"
 #include "server/scale_out/scale_out.hpp"
 #include "server/storage/state_store.hpp"
@@ -27,13 +28,21 @@ struct RenderImage {
   int spp_done = 0;                    // samples per pixel in it
 };
 
+// What a render job works with beside its request.
+struct RenderJobContext {
+  StateStore* store = nullptr;         // where it keeps its record and image; null keeps nothing
+  RenderCounters* counters = nullptr;  // the server's counters it adds each finished pass to; null: none
+  MemoryReservation memory;            // its reservation in the budget (renders/render_memory.hpp)
+  std::optional<ScaleOut> scale_out;   // splits it into work items on Redis (render_coordinator.hpp)
+};
+
 class RenderJob : public Job {
  public:
   // `record` is a fresh one for a new render, or the record of an earlier run to continue (then `image`
   // is its mean image over record.spp_done samples per pixel). `envmap` may be null for a job that has
-  // ended; `store` null keeps nothing.
+  // ended. The reservation shrinks to the kept image when the job ends.
   RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
-            std::shared_ptr<const Image> image, StateStore* store);
+            std::shared_ptr<const Image> image, RenderJobContext context);
 
   RenderImage image() const;
   int spp_done() const;
@@ -41,25 +50,16 @@ class RenderJob : public Job {
   RenderRecord record() const;
   RenderRecord record(JobStatus status, const std::optional<JobError>& error) const;
   int64_t retained_bytes() const override;
-  // The job's reservation in the memory budget (see render_memory.hpp); it shrinks to the kept image
-  // when the job ends. Set before the job is submitted.
-  void hold_memory(MemoryReservation memory) { memory_ = std::move(memory); }
-  // The server's counters the job adds each finished pass to. Set before the job is submitted.
-  void count_in(RenderCounters* counters) { counters_ = counters; }
-  // Splits the render into work items on Redis (render_coordinator.hpp) instead of rendering it here.
-  // Set before the job is submitted.
-  void split_over(std::optional<ScaleOut> scale_out) { scale_out_ = std::move(scale_out); }
 
-  void save_record() const { save_record(status(), error()); }  // to the store (a failure is logged)
-  void save_record(JobStatus status, const std::optional<JobError>& error) const;
-  void delete_state() const;  // removes the record and the image from the store, for good
+  void save_record() const { files_.save_record(record()); }  // to the store (a failure is logged)
+  void delete_state() { files_.remove(); }                    // the record and the image, for good
 
  protected:
   bool run() override;
   void describe(nlohmann::json& out) const override;
   void ending(JobStatus status, const std::optional<JobError>& error) override {
     keep_result_memory();
-    save_record(status, error);
+    files_.save_record(record(status, error));
   }
   void forgotten() override { delete_state(); }
 
@@ -85,9 +85,8 @@ class RenderJob : public Job {
   const api::RenderRequest request_;
   const nlohmann::json request_json_;
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
-  StateStore* const store_;
-  RenderCounters* counters_ = nullptr;
-  std::optional<ScaleOut> scale_out_;
+  RenderCounters* const counters_;
+  const std::optional<ScaleOut> scale_out_;
   const render::RenderStats earlier_stats_;  // of earlier runs
   const double earlier_render_s_;
 
@@ -96,13 +95,11 @@ class RenderJob : public Job {
   int spp_done_ = 0;
   std::vector<render::SampleRange> ranges_done_;  // see RenderRecord::ranges_done
   render::RenderStats stats_;
-  double render_s_ = 0;  // time spent in passes (not building the scene), for the rates
-  std::string image_file_, envmap_fingerprint_;
+  double render_s_ = 0;             // time spent in passes (not building the scene), for the rates
+  std::string envmap_fingerprint_;  // of the map the kept image was rendered with
 
   MemoryReservation memory_;
-
-  mutable std::mutex store_mutex_;  // one write at a time; none after delete_state()
-  mutable bool deleted_ = false;
+  RenderFiles files_;
 };
 
 }  // namespace lp::server

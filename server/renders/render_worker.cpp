@@ -69,8 +69,8 @@ std::string worker_name() {
 RenderWorker::RenderWorker(App& app, std::string consumer)
     : app_(app),
       consumer_(std::move(consumer)),
-      redis_(*app.options.redis),
-      cancel_check_(*app.options.redis, 5s),
+      redis_(*app.options.scale_out.redis),
+      cancel_check_(*app.options.scale_out.redis, 5s),
       maps_(app),
       bundles_(app),
       thread_([this](std::stop_token stop) { loop(stop); }) {}
@@ -80,8 +80,8 @@ RenderWorker::~RenderWorker() {
 }
 
 void RenderWorker::loop(const std::stop_token& stop) {
-  spdlog::info("worker {}: taking render items from {}", consumer_, app_.options.redis->url());
-  RenderArena arena(app_.options.threads, app_.options.render_priority);
+  spdlog::info("worker {}: taking render items from {}", consumer_, app_.options.scale_out.redis->url());
+  JobArena arena(app_.options.threads, app_.options.jobs.render_priority);
   while (!stop.stop_requested()) {
     try {
       if (const auto item = next_item()) arena.execute([&] { take(*item, stop); });
@@ -105,7 +105,7 @@ std::optional<StreamEntry> RenderWorker::next_item() {
     std::this_thread::sleep_for(kIdleWait);
     return std::nullopt;
   }
-  const std::chrono::milliseconds claim_after(int64_t(app_.options.redis_claim_timeout_s) * 1000);
+  const std::chrono::milliseconds claim_after(int64_t(app_.options.scale_out.claim_timeout_s) * 1000);
   for (const auto& stream : streams)
     for (auto& entry : redis_.xautoclaim(stream, keys::kGroup, consumer_, claim_after)) {
       spdlog::info("worker {}: took over item {} of {}", consumer_, entry.id, stream);

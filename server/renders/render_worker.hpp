@@ -6,7 +6,7 @@
 // It checks the render's cancel key between tiles, so a cancel stops it within the item. The renderer of
 // the last render is kept for its next items; its map comes through a MapFetcher, its meshes' files
 // through a BundleFetcher (never from this server's --data-dir or assets). Items render in a
-// RenderArena, at --render-priority like local renders.
+// JobArena, at --render-priority like local renders.
 #include <atomic>
 #include <memory>
 #include <optional>

@@ -7,31 +7,11 @@
 #include <stdexcept>
 
 #include "api/api_error.hpp"
-#include "engine/image/image_io.hpp"
 #include "server/maps/envmap_fingerprint.hpp"
-#include "server/renders/render_memory.hpp"
 #include "server/renders/scene_meshes.hpp"
 
 namespace lp::server {
 namespace {
-
-// The mean image a record names, or null if it names none or the file is unusable (logged).
-std::shared_ptr<const Image> read_record_image(const StateStore& store, const RenderRecord& record,
-                                               const api::RenderRequest& request) {
-  if (record.image_file.empty()) return nullptr;
-  const auto& s = request.settings;
-  try {
-    ImageLimits limits;
-    limits.max_pixels = int64_t{s.width} * s.height;
-    auto decoded = read_image_file(store.renders_dir() / record.image_file, limits);
-    if (decoded.image.width() != s.width || decoded.image.height() != s.height)
-      throw std::runtime_error("its size is not the render's");
-    return std::make_shared<const Image>(std::move(decoded.image));
-  } catch (const std::exception& e) {
-    spdlog::warn("state: render {}: cannot use {}: {}", record.id, record.image_file, e.what());
-    return nullptr;
-  }
-}
 
 std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   const auto request = api::parse_render_request(record.request, app.options.limits);
@@ -41,7 +21,7 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   if (!record.image_file.empty())
     memory = app.memory.reserve(EnvMap::image_bytes(request.settings.width, request.settings.height),
                                 MemoryUse::Held, fmt::format("the image of render {}", record.id));
-  auto image = read_record_image(*app.state, record, request);
+  auto image = RenderFiles::read_image(*app.state, record, request);
   if (!image) {
     memory = {};
     if (status != JobStatus::Interrupted && record.spp_done > 0)
@@ -49,9 +29,8 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
     record.spp_done = 0;  // an interrupted render without a usable image starts over
     record.image_file.clear();
   }
-  auto job =
-      std::make_shared<RenderJob>(std::move(record), request, nullptr, std::move(image), app.state.get());
-  job->hold_memory(std::move(memory));
+  auto job = std::make_shared<RenderJob>(std::move(record), request, nullptr, std::move(image),
+                                         RenderJobContext{app.state.get(), nullptr, std::move(memory), {}});
   job->restore_ended(status, job->error());
   return job;
 }
@@ -95,14 +74,14 @@ void restore_renders(App& app) {
   if (!app.options.resume_interrupted) return;
   for (const auto& job : interrupted) {
     try {
-      if (!resume_render(app, job)) spdlog::warn("render {} not resumed: the queue is full", job->id());
+      if (!resume_render(app, job).job) spdlog::warn("render {} not resumed: the queue is full", job->id());
     } catch (const std::exception& e) {
       spdlog::warn("render {} not resumed: {}", job->id(), e.what());
     }
   }
 }
 
-std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
+QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
   if (job->status() != JobStatus::Interrupted)
     throw cannot_resume(*job, api::ErrorCode::NotInterrupted,
                         fmt::format("it is {}; only interrupted renders resume", enum_name(job->status())));
@@ -124,21 +103,15 @@ std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJ
     throw cannot_resume(
         *job, api::ErrorCode::EnvmapChanged,
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
-  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
-  auto next = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map,
-                                          job->image().image, app.state.get());
-  next->hold_memory(std::move(memory));
-  next->count_in(&app.render_counters);
-  next->split_over(scale_out(app.options, app.bundles));
-  next->save_record();
-  if (!app.renders.submit(next)) {
+  auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles,
+                             job->image().image, job.get());
+  if (!queued.job) {
     if (app.renders.find(job->id()) != job)
       throw cannot_resume(*job, api::ErrorCode::NotInterrupted, "it was resumed already");
-    job->save_record();
-    return nullptr;
+    return queued;
   }
-  spdlog::info("render {} resumed after {} spp", next->id(), next->spp_done());
-  return next;
+  spdlog::info("render {} resumed after {} spp", queued.job->id(), queued.job->spp_done());
+  return queued;
 }
 
 }  // namespace lp::server

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "server/app.hpp"
+#include "server/renders/queue_render.hpp"
 #include "server/renders/render_job.hpp"
 
 namespace lp::server {
@@ -13,9 +14,9 @@ namespace lp::server {
 // be used is skipped with a warning. With --resume-interrupted, resumes the interrupted ones.
 void restore_renders(App& app);
 
-// Queues a continuation of an interrupted render, which replaces it under the same id; nullptr if the
+// Queues a continuation of an interrupted render, which replaces it under the same id; no job if the
 // queue is full. Throws ApiError 409 if the job is not interrupted, its map is not loaded, or the map
 // loaded under its name is not the one it was rendering.
-std::shared_ptr<RenderJob> resume_render(App& app, const std::shared_ptr<RenderJob>& job);
+QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job);
 
 }  // namespace lp::server

@@ -12,8 +12,9 @@
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
 #include "server/http/reserved_content.hpp"
+#include "server/renders/event_streams.hpp"
+#include "server/renders/queue_render.hpp"
 #include "server/renders/render_job.hpp"
-#include "server/renders/render_memory.hpp"
 #include "server/renders/scene_meshes.hpp"
 #include "server/renders/stored_renders.hpp"
 #include "server/routes/job_answers.hpp"
@@ -32,7 +33,7 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
 
 // A worker renders the work items of other servers' renders and takes none of its own.
 void refuse_on_worker(const App& app) {
-  if (app.options.role == ServerRole::Worker)
+  if (app.options.scale_out.role == ServerRole::Worker)
     throw api::ApiError(
         api::ErrorCode::WorkerOnly,
         "this server runs with --role worker: it renders work items of other servers' renders "
@@ -53,27 +54,16 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   const int64_t triangles = resolve_meshes(request.scene, app);
-  auto memory = reserve_render(app.memory, request.settings.width, request.settings.height, triangles);
-  auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), envmap->map, nullptr,
-                                         app.state.get());
-  job->hold_memory(std::move(memory));
-  job->count_in(&app.render_counters);
-  job->split_over(scale_out(app.options, app.bundles));
-  const auto body = job->status_json();  // taken before a runner can pick it up: "queued"
-  job->save_record();
-  if (!app.renders.submit(job)) {
-    job->delete_state();
-    send_queue_full(app.renders, "renders", res);
-    return;
-  }
-  send_accepted(render_url(*job), body, res);
+  const auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles);
+  if (!queued.job) return send_queue_full(app.renders, "renders", res);
+  send_accepted(render_url(*queued.job), queued.status, res);
 }
 
 void resume(App& app, const httplib::Request& req, httplib::Response& res) {
   refuse_on_worker(app);
-  const auto job = resume_render(app, find_render(app, path_param(req, 1)));
-  if (!job) return send_queue_full(app.renders, "renders", res);
-  send_accepted(render_url(*job), job->status_json(), res);
+  const auto queued = resume_render(app, find_render(app, path_param(req, 1)));
+  if (!queued.job) return send_queue_full(app.renders, "renders", res);
+  send_accepted(render_url(*queued.job), queued.status, res);
 }
 
 void list(const App& app, httplib::Response& res) {
@@ -82,8 +72,8 @@ void list(const App& app, httplib::Response& res) {
   send_json(res, {{"renders", renders},
                   {"running", app.renders.running_count()},
                   {"queued", app.renders.queued_count()},
-                  {"max_running", app.options.max_running_jobs},
-                  {"max_queued", app.options.max_queued_jobs}});
+                  {"max_running", app.options.jobs.max_running},
+                  {"max_queued", app.options.jobs.max_queued}});
 }
 
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
@@ -106,26 +96,6 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {
   cancel_or_remove(app.renders, *find_render(app, path_param(req, 1)), "render job", res);
 }
-
-// One slot of the bounded number of event streams; released when the response (and its provider) goes.
-class StreamSlot {
- public:
-  StreamSlot(std::atomic<int>& count, int max) : count_(&count) {
-    if (count_->fetch_add(1) >= max) {
-      count_->fetch_sub(1);
-      count_ = nullptr;
-    }
-  }
-  ~StreamSlot() {
-    if (count_) count_->fetch_sub(1);
-  }
-  StreamSlot(const StreamSlot&) = delete;
-  StreamSlot& operator=(const StreamSlot&) = delete;
-  bool acquired() const { return count_ != nullptr; }
-
- private:
-  std::atomic<int>* count_;
-};
 
 struct EventStream {
   std::shared_ptr<RenderJob> job;

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <span>
 #include <stdexcept>
 #include <system_error>
@@ -46,13 +45,15 @@ fs::path BundleFetcher::model_file(const MeshReference& mesh, const std::string&
   if (!is_bundle_hash(mesh.bundle))
     throw std::runtime_error("'" + api::excerpt(mesh.bundle) + "' is no bundle hash");
   std::lock_guard lock(mutex_);
-  if (std::find(kept_.begin(), kept_.end(), mesh.bundle) == kept_.end()) fetch(mesh.bundle, source_url);
-  keep(mesh.bundle);
+  if (!kept_.use(mesh.bundle)) {
+    fetch(mesh.bundle, source_url);
+    for (const auto& [dropped, _] : kept_.add(mesh.bundle, {})) remove_folder(folder(dropped));
+  }
   return resolve_inside(folder(mesh.bundle), mesh.model, field, "the mesh bundle " + mesh.bundle);
 }
 
 void BundleFetcher::fetch(const std::string& hash, const std::string& source_url) {
-  const ArchiveLimits limits{app_.options.max_asset_mb << 20, app_.options.max_asset_files};
+  const ArchiveLimits limits = app_.options.assets.archive();
   Download download =
       download_content(app_, source_url, hash, bundle_tar_bytes(limits.max_bytes, limits.max_members),
                        "the mesh bundle " + hash);
@@ -80,15 +81,6 @@ void BundleFetcher::fetch(const std::string& hash, const std::string& source_url
   remove_folder(folder(hash));
   fs::rename(staging, folder(hash));
   spdlog::info("fetched mesh bundle {} from {} ({} files, {} bytes)", hash, source_url, files.size(), bytes);
-}
-
-void BundleFetcher::keep(const std::string& hash) {
-  kept_.remove(hash);
-  kept_.push_front(hash);
-  while (kept_.size() > kKept) {
-    remove_folder(folder(kept_.back()));
-    kept_.pop_back();
-  }
 }
 
 }  // namespace lp::server

@@ -5,11 +5,11 @@
 // an uploaded asset, checked against the hash and kept for the next items and renders (the last few, by
 // last use; the folder is emptied at start). The download's bytes are reserved in the memory budget.
 #include <filesystem>
-#include <list>
 #include <mutex>
 #include <string>
 
 #include "server/app.hpp"
+#include "server/scale_out/recent_list.hpp"
 #include "server/scale_out/render_description.hpp"
 
 namespace lp::server {
@@ -27,13 +27,12 @@ class BundleFetcher {
  private:
   std::filesystem::path folder(const std::string& hash) const { return root_ / hash; }
   void fetch(const std::string& hash, const std::string& source_url);
-  void keep(const std::string& hash);
 
   static constexpr size_t kKept = 8;
   App& app_;
   const std::filesystem::path root_;  // empty without a state directory
   std::mutex mutex_;
-  std::list<std::string> kept_;  // hashes, most recently used first
+  RecentList<std::string> kept_{kKept};  // hashes
 };
 
 }  // namespace lp::server

@@ -24,17 +24,12 @@ int64_t largest_map_file_bytes(const ImageLimits& limits) {
 std::shared_ptr<const EnvMap> MapFetcher::get(const std::string& hash, const std::string& source_url) {
   {
     std::lock_guard lock(mutex_);
-    for (auto it = kept_.begin(); it != kept_.end(); ++it)
-      if (it->first == hash) {
-        kept_.splice(kept_.begin(), kept_, it);
-        return it->second;
-      }
+    if (const auto* kept = kept_.use(hash)) return *kept;
   }
   auto map = own(hash);
   if (!map) map = fetch(hash, source_url);
   std::lock_guard lock(mutex_);
-  kept_.emplace_front(hash, map);
-  if (kept_.size() > kKept) kept_.pop_back();
+  kept_.add(hash, map);
   return map;
 }
 

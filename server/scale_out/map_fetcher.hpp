@@ -4,13 +4,13 @@
 // OpenEXR, no larger than a map within --max-pixels can be), checked against the hash and kept for the
 // next items (the last few, by last use). The download and the decoded pixels are reserved in the memory
 // budget; a fetched map's pixels stay there, held, while it is kept or a renderer uses it.
-#include <list>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <utility>
 
 #include "server/app.hpp"
+#include "server/scale_out/recent_list.hpp"
 
 namespace lp::server {
 
@@ -28,7 +28,7 @@ class MapFetcher {
   static constexpr size_t kKept = 4;
   App& app_;
   std::mutex mutex_;
-  std::list<std::pair<std::string, std::shared_ptr<const EnvMap>>> kept_;  // most recently used first
+  RecentList<std::string, std::shared_ptr<const EnvMap>> kept_{kKept};
 };
 
 }  // namespace lp::server

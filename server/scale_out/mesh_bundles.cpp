@@ -38,17 +38,12 @@ MeshBundle MeshBundles::bundle_of(const Model& model) {
   const auto stamps = stamps_now(model);
   {
     std::lock_guard lock(mutex_);
-    for (auto it = kept_.begin(); it != kept_.end(); ++it)
-      if (it->stamps == stamps) {
-        kept_.splice(kept_.begin(), kept_, it);
-        return it->bundle;
-      }
+    if (const auto* kept = kept_.use(stamps)) return *kept;
   }
   // Hashed without the lock: reading the files holds up no other render.
   MeshBundle bundle = mesh_bundle(model);
   std::lock_guard lock(mutex_);
-  kept_.push_front({stamps, bundle});
-  if (kept_.size() > kKept) kept_.pop_back();
+  kept_.add(stamps, bundle);
   return bundle;
 }
 
@@ -65,9 +60,8 @@ std::vector<MeshReference> MeshBundles::publish(const render::SceneDesc& scene) 
 
 std::optional<MeshBundle> MeshBundles::find(const std::string& hash) const {
   std::lock_guard lock(mutex_);
-  for (const auto& entry : kept_)
-    if (entry.bundle.hash == hash) return entry.bundle;
-  return std::nullopt;
+  const auto* kept = kept_.find_if([&](const MeshBundle& bundle) { return bundle.hash == hash; });
+  return kept ? std::optional<MeshBundle>(*kept) : std::nullopt;
 }
 
 }  // namespace lp::server

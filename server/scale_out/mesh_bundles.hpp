@@ -7,7 +7,6 @@
 // last few bundles stay published; a hash is computed again only when a file's size or time changed.
 // Thread-safe.
 #include <filesystem>
-#include <list>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -15,6 +14,7 @@
 
 #include "engine/model/model.hpp"
 #include "engine/render/scene_desc.hpp"
+#include "server/scale_out/recent_list.hpp"
 #include "server/scale_out/render_description.hpp"
 
 namespace lp::server {
@@ -37,15 +37,11 @@ class MeshBundles {
   std::optional<MeshBundle> find(const std::string& hash) const;
 
  private:
-  struct Entry {
-    std::vector<FileStamp> stamps;  // the files when the hash was computed
-    MeshBundle bundle;
-  };
   MeshBundle bundle_of(const Model& model);
 
   static constexpr size_t kKept = 64;
   mutable std::mutex mutex_;
-  std::list<Entry> kept_;  // most recently published first
+  RecentList<std::vector<FileStamp>, MeshBundle> kept_{kKept};  // by the files when they were hashed
 };
 
 }  // namespace lp::server

@@ -203,10 +203,6 @@ std::optional<std::string> RedisClient::hget(std::string_view key, std::string_v
   return r.nil() ? std::nullopt : std::optional(std::move(r.text));
 }
 
-bool RedisClient::hexists(std::string_view key, std::string_view field) {
-  return command({"HEXISTS", key, field}).integer > 0;
-}
-
 void RedisClient::hdel(std::string_view key, std::string_view field) {
   command({"HDEL", key, field});
 }

@@ -54,8 +54,6 @@ class RedisClient {
   RedisClient(const RedisClient&) = delete;
   RedisClient& operator=(const RedisClient&) = delete;
 
-  const RedisAddress& address() const { return address_; }
-
   // Any command, its arguments binary safe. Throws RedisError for an error reply.
   RedisReply command(const std::vector<std::string_view>& args);
 
@@ -67,7 +65,6 @@ class RedisClient {
   void del(const std::vector<std::string_view>& keys);
   void hset(std::string_view key, std::string_view field, std::string_view value);
   std::optional<std::string> hget(std::string_view key, std::string_view field);
-  bool hexists(std::string_view key, std::string_view field);
   void hdel(std::string_view key, std::string_view field);
   void sadd(std::string_view key, std::string_view member);
   void srem(std::string_view key, std::string_view member);

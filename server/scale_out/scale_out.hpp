@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "server/options.hpp"
 #include "server/scale_out/mesh_bundles.hpp"
 #include "server/scale_out/redis_url.hpp"
+#include "server/scale_out/scale_out_config.hpp"
 
 namespace lp::server {
 
@@ -17,9 +17,9 @@ struct ScaleOut {
   MeshBundles* bundles = nullptr;  // where a render publishes its scene's mesh bundles
 };
 
-inline std::optional<ScaleOut> scale_out(const Options& o, MeshBundles& bundles) {
-  if (!o.redis || o.role == ServerRole::Worker) return std::nullopt;
-  return ScaleOut{*o.redis, o.redis_item_spp, o.advertise_url, &bundles};
+inline std::optional<ScaleOut> scale_out(const ScaleOutConfig& c, MeshBundles& bundles) {
+  if (!c.redis || c.role == ServerRole::Worker) return std::nullopt;
+  return ScaleOut{*c.redis, c.item_spp, c.advertise_url, &bundles};
 }
 
 }  // namespace lp::server

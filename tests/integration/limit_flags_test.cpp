@@ -1,6 +1,6 @@
-// Every limit flag a request can exceed (api::int_parameters() with an `exceeded` code) is enforced by the
-// real server: one server runs with each such flag set low, and a request just over each limit gets the
-// declared 4xx with a message naming what was over. A new limit flag without a probe here fails the test.
+// Every limit flag a request can exceed (server::int_flag_parameters() with an `exceeded` code) is enforced
+// by the real server: one server runs with each such flag set low, and a request just over each limit gets
+// the declared 4xx with a message naming what was over. A new limit flag without a probe here fails the test.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -13,6 +13,7 @@
 #include <string>
 
 #include "api/parameters.hpp"
+#include "server/options.hpp"
 #include "support/archive_builder.hpp"
 #include "support/http_reply.hpp"
 #include "support/server_process.hpp"
@@ -119,7 +120,7 @@ TEST(LimitFlags, EveryLimitARequestCanExceedAnswersItsDeclaredStatus) {
   const DataDir data;
   std::vector<std::string> flags = {"--data-dir", data.path()};
   std::vector<const api::IntParameter*> limits;
-  for (const api::IntParameter* p : api::int_parameters()) {
+  for (const api::IntParameter* p : server::int_flag_parameters()) {
     if (!p->exceeded) continue;
     const auto probe = all.find(p->flag);
     ASSERT_NE(probe, all.end()) << "--" << p->flag << " has no probe in this test";
@@ -170,7 +171,7 @@ TEST(LimitFlags, TheOpenApiDocumentNamesEveryRequestLimitAndOnlyRealFlags) {
   std::ifstream in(LIGHTPROBE_OPENAPI);
   const std::string document{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   ASSERT_GT(document.size(), 1000u);
-  for (const api::IntParameter* p : api::int_parameters()) {
+  for (const api::IntParameter* p : server::int_flag_parameters()) {
     if (!p->exceeded) continue;
     EXPECT_NE(document.find(std::string("--") + p->flag), std::string::npos)
         << "--" << p->flag << " is not named in api/openapi.yaml";

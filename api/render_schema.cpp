@@ -1,0 +1,29 @@
+#include "api/render_schema.hpp"
+
+namespace lp::api {
+
+void describe_render(Json& out, const RenderRequest& request, const RenderProgress& progress) {
+  const auto& s = request.settings;
+  out["spp_done"] = progress.spp_done;
+  out["spp"] = s.spp;
+  out["width"] = s.width;
+  out["height"] = s.height;
+  out["max_depth"] = s.max_depth;
+  out["seed"] = s.seed;
+  out["mipmaps"] = s.mipmaps;
+  out["normal_maps"] = s.normal_maps;
+  out["sampling"] = enum_name(s.sampling);
+  out["envmap"] = request.envmap;
+  out["scene"] =
+      request.preset ? Json{{"preset", *request.preset}} : Json{{"objects", request.scene.objects.size()}};
+  out["lighting_mode"] = enum_name(request.lighting.mode);
+  out["lighting_sun"] = enum_name(request.lighting.sun);
+  const auto& stats = progress.stats;
+  out["samples"] = stats.samples;
+  out["rays"] = stats.rays;
+  out["samples_per_s"] = progress.render_s > 0 ? double(stats.samples) / progress.render_s : 0.0;
+  out["rays_per_s"] = progress.render_s > 0 ? double(stats.rays) / progress.render_s : 0.0;
+  out["image_available"] = progress.image_available;
+}
+
+}  // namespace lp::api

@@ -1,0 +1,26 @@
+#include "server/renders/queue_render.hpp"
+
+#include "server/renders/render_memory.hpp"
+
+namespace lp::server {
+
+QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest request,
+                          std::shared_ptr<const EnvMap> envmap, int64_t triangles,
+                          std::shared_ptr<const Image> image, const RenderJob* replaced) {
+  const auto& s = request.settings;
+  RenderJobContext context{app.state.get(), &app.render_counters,
+                           reserve_render(app.memory, s.width, s.height, triangles),
+                           scale_out(app.options.scale_out, app.bundles)};
+  auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), std::move(envmap),
+                                         std::move(image), std::move(context));
+  QueuedRender queued{job, job->status_json()};
+  job->save_record();
+  if (app.renders.submit(job)) return queued;
+  if (!replaced)
+    job->delete_state();
+  else if (app.renders.find(replaced->id()).get() == replaced)
+    replaced->save_record();
+  return {nullptr, std::move(queued.status)};
+}
+
+}  // namespace lp::server
