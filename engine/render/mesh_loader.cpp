@@ -9,8 +9,8 @@
 #include <system_error>
 
 #include "engine/core/error.hpp"
+#include "engine/model/obj_prescan.hpp"
 #include "engine/render/mesh_transform.hpp"
-#include "engine/render/obj_prescan.hpp"
 
 namespace lp::render {
 namespace {
@@ -33,7 +33,7 @@ std::string read_text(const std::filesystem::path& path, int64_t max_bytes) {
 
 int64_t check_obj_file(const std::filesystem::path& path, const MeshLimits& limits) {
   const std::string name = path.filename().string();
-  return check_obj_text(read_text(path, limits.max_file_bytes), name, limits.max_triangles);
+  return obj::check_obj_text(read_text(path, limits.max_file_bytes), name, limits.max_triangles);
 }
 
 TriangleMesh load_obj_mesh(const MeshObject& m, const MeshLimits& limits) {
@@ -43,7 +43,7 @@ TriangleMesh load_obj_mesh(const MeshObject& m, const MeshLimits& limits) {
 TriangleMesh obj_mesh_from_text(const std::string& text, const std::string& name, const MeshObject& m,
                                 const MeshLimits& limits) {
   check_mesh_transform(m);
-  check_obj_text(text, name, limits.max_triangles);
+  obj::check_obj_text(text, name, limits.max_triangles);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

@@ -9,8 +9,8 @@
 #include "engine/core/error.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/model/obj_prescan.hpp"
 #include "engine/render/mesh_loader.hpp"
-#include "engine/render/obj_prescan.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
@@ -187,8 +187,7 @@ TEST(DecoderBounds, ObjInputThatOverflowsTheParserIsRefused) {
       std::string::npos);
   const std::string polygon = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf" + [] {
     std::string s;
-    for (int i = 0; i <= render::kMaxObjFaceVertices; ++i)
-      s += (i % 3 == 0 ? " 1" : i % 3 == 1 ? " 2" : " 3");
+    for (int i = 0; i <= obj::kMaxObjFaceVertices; ++i) s += (i % 3 == 0 ? " 1" : i % 3 == 1 ? " 2" : " 3");
     return s;
   }();
   error_of(ErrorKind::Corrupt, [&] { render::obj_mesh_from_text(polygon, "poly.obj", {}, {}); });
