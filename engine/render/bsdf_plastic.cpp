@@ -4,7 +4,7 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/fresnel/dielectric.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 namespace {
