@@ -1,4 +1,4 @@
-#include "engine/render/bsdf_plastic.hpp"
+#include "engine/bsdf/bsdf_plastic.hpp"
 
 #include <utility>
 

@@ -1,4 +1,4 @@
-#include "engine/render/bsdf_diffuse.hpp"
+#include "engine/bsdf/bsdf_diffuse.hpp"
 
 #include "engine/core/constants.hpp"
 #include "engine/sampling/warp.hpp"

@@ -1,4 +1,4 @@
-#include "engine/render/microfacet_multiscatter.hpp"
+#include "engine/bsdf/microfacet_multiscatter.hpp"
 
 #include "engine/core/constants.hpp"
 #include "engine/sampling/warp.hpp"
