@@ -1,5 +1,5 @@
 // Resident memory a render's mesh takes: peak and held bytes per triangle while an EmbreeScene is built
-// from an OBJ (parsing, TriangleMesh, Embree's BVH), for the bunny and for generated grids of 20k and
+// from an OBJ (parsing, the model, Embree's BVH), for the bunny and for generated grids of 20k and
 // 980k triangles. mesh_memory_bytes() is set from these figures. Run: build/bin/mesh_memory_bench.
 #include <benchmark/benchmark.h>
 
@@ -9,7 +9,6 @@
 
 #include "bench_data.hpp"
 #include "engine/render/embree_scene.hpp"
-#include "engine/render/mesh_loader.hpp"
 #include "process_memory.hpp"
 #include "support/test_data.hpp"
 

@@ -7,8 +7,8 @@
 #include <map>
 #include <mutex>
 
-#include "engine/render/microfacet.hpp"
-#include "engine/render/visible_normal_quadrature.hpp"
+#include "engine/bsdf/microfacet.hpp"
+#include "engine/bsdf/visible_normal_quadrature.hpp"
 
 namespace lp {
 namespace {

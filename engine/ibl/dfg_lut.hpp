@@ -7,7 +7,7 @@
 //   multiscatter:      (bias, scale + bias), Filament's layout: specular = mix(x, y, F0), and
 //                      1 + F0 (1 / y - 1) compensates the energy multiple scattering keeps
 // with Fc = (1 - v.h)^5 and G2 / G1 the weight of a visible normal (Heitz 2018), integrated by the
-// quadrature of the renderer's own albedo tables (render/visible_normal_quadrature.hpp).
+// quadrature of the renderer's own albedo tables (engine/bsdf/visible_normal_quadrature.hpp).
 #include <memory>
 #include <vector>
 

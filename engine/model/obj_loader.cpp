@@ -10,7 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/model/mesh_part.hpp"
-#include "engine/render/obj_prescan.hpp"
+#include "engine/model/obj_prescan.hpp"
 
 namespace lp::obj {
 namespace {
@@ -151,8 +151,8 @@ std::vector<std::string> material_libraries(const std::string& obj) {
 
 Model load(const std::string& obj, const std::string& mtl, const std::string& name, ModelTextures& textures,
            const ModelLimits& limits) {
-  render::check_obj_text(obj, name, limits.max_triangles);
-  render::check_mtl_text(mtl, name + " materials");
+  check_obj_text(obj, name, limits.max_triangles);
+  check_mtl_text(mtl, name + " materials");
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

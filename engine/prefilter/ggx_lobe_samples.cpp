@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "engine/bsdf/microfacet.hpp"
 #include "engine/core/constants.hpp"
 #include "engine/envmap/sample_set.hpp"
-#include "engine/render/microfacet.hpp"
 
 namespace lp {
 namespace {

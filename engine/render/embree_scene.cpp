@@ -267,4 +267,12 @@ Vec3 EmbreeScene::offset_origin(const SurfaceHit& hit, Vec3 direction) {
   return dot(direction, hit.normal) >= 0 ? p + hit.normal * eps : p - hit.normal * eps;
 }
 
+int64_t mesh_memory_bytes(int64_t triangles) {
+  // Peak resident bytes per triangle while a mesh is read and its BVH built (the file's text,
+  // tinyobjloader's arrays, the model, Embree's BVH): 190 at 980k triangles and 133 at 20k in
+  // bench/mesh_memory_bench, rounded up.
+  constexpr int64_t kMeshBytesPerTriangle = 256;
+  return triangles * kMeshBytesPerTriangle;
+}
+
 }  // namespace lp::render

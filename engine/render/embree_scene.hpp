@@ -36,7 +36,7 @@ struct SurfaceHit {
 
 class EmbreeScene {
  public:
-  // Throws lp::Error (InvalidArgument for bad shapes; mesh errors from load_obj_mesh).
+  // Throws lp::Error (InvalidArgument for bad shapes; mesh errors from lp::load_model).
   EmbreeScene(const SceneDesc& scene, const MeshLimits& limits);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
@@ -79,5 +79,9 @@ class EmbreeScene {
   std::vector<Object> objects_;
   size_t triangle_count_ = 0;
 };
+
+// Memory a mesh of `triangles` takes while a render holds it: the parsed file, the model and Embree's
+// scene and BVH (measured by bench/mesh_memory_bench).
+int64_t mesh_memory_bytes(int64_t triangles);
 
 }  // namespace lp::render

@@ -5,7 +5,7 @@
 
 #include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 namespace {

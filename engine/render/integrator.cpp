@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "engine/render/model_shading.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 namespace {

@@ -16,8 +16,8 @@
 #include <optional>
 #include <vector>
 
-#include "engine/render/bsdf.hpp"
-#include "engine/render/bsdf_metallic_roughness.hpp"
+#include "engine/bsdf/bsdf.hpp"
+#include "engine/bsdf/bsdf_metallic_roughness.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/env_light.hpp"

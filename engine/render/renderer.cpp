@@ -17,13 +17,13 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/adaptive_allocation.hpp"
-#include "engine/render/bsdf.hpp"
 #include "engine/render/camera.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/env_light.hpp"
 #include "engine/render/film.hpp"
 #include "engine/render/integrator.hpp"
+#include "engine/render/material_bsdf.hpp"
 #include "engine/render/path_sampler.hpp"
 #include "engine/render/sun_light.hpp"
 

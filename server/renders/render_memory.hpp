@@ -7,8 +7,8 @@
 #include "engine/core/memory_budget.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/encode_memory.hpp"
+#include "engine/render/embree_scene.hpp"
 #include "engine/render/film.hpp"
-#include "engine/render/mesh_loader.hpp"
 
 namespace lp::server {
 

@@ -4,13 +4,15 @@
 
 #include <cfloat>
 #include <cmath>
+#include <set>
 #include <string>
+#include <tuple>
 
 #include "engine/core/error.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/render/mesh_loader.hpp"
-#include "engine/render/obj_prescan.hpp"
+#include "engine/model/model_loader.hpp"
+#include "engine/model/obj_prescan.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
@@ -171,9 +173,9 @@ TEST(DecoderBounds, EveryCorpusExrCompressionDecodes) {
   }
 }
 
-render::TriangleMesh obj(const std::string& file) {
+Model obj(const std::string& file) {
   const auto bytes = test::read_bytes(test::fuzz_corpus_path("obj", file));
-  return render::obj_mesh_from_text(std::string(bytes.begin(), bytes.end()), file, {}, {});
+  return load_obj_memory(std::string(bytes.begin(), bytes.end()), "", file, {});
 }
 
 TEST(DecoderBounds, ObjInputThatOverflowsTheParserIsRefused) {
@@ -187,20 +189,21 @@ TEST(DecoderBounds, ObjInputThatOverflowsTheParserIsRefused) {
       std::string::npos);
   const std::string polygon = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf" + [] {
     std::string s;
-    for (int i = 0; i <= render::kMaxObjFaceVertices; ++i)
-      s += (i % 3 == 0 ? " 1" : i % 3 == 1 ? " 2" : " 3");
+    for (int i = 0; i <= obj::kMaxObjFaceVertices; ++i) s += (i % 3 == 0 ? " 1" : i % 3 == 1 ? " 2" : " 3");
     return s;
   }();
-  error_of(ErrorKind::Corrupt, [&] { render::obj_mesh_from_text(polygon, "poly.obj", {}, {}); });
-  render::MeshLimits few;
+  error_of(ErrorKind::Corrupt, [&] { load_obj_memory(polygon, "", "poly.obj", {}); });
+  ModelLimits few;
   few.max_triangles = 1;
-  error_of(ErrorKind::TooLarge,
-           [&] { render::obj_mesh_from_text("v 0 0 0\nf 1 1 1\nf 1 1 1\n", "two.obj", {}, few); });
+  error_of(ErrorKind::TooLarge, [&] { load_obj_memory("v 0 0 0\nf 1 1 1\nf 1 1 1\n", "", "two.obj", few); });
 }
 
 TEST(DecoderBounds, ObjWithEveryStatementTheLibraryReadsLoads) {
-  const render::TriangleMesh cube = obj("cube.obj");
-  EXPECT_EQ(cube.positions.size(), 8u);
+  const Model cube = obj("cube.obj");
+  // Every corner is read (a corner may be several vertices: with and without a texture coordinate).
+  std::set<std::tuple<float, float, float>> corners;
+  for (const Vec3& p : cube.positions) corners.insert({p.x, p.y, p.z});
+  EXPECT_EQ(corners.size(), 8u);
   EXPECT_EQ(cube.triangle_count(), 12u);
 }
 

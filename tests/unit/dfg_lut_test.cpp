@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "engine/bsdf/microfacet.hpp"
 #include "engine/core/constants.hpp"
-#include "engine/render/microfacet.hpp"
 
 namespace lp {
 namespace {

@@ -12,13 +12,13 @@
 #include <cmath>
 #include <cstring>
 
+#include "engine/bsdf/microfacet.hpp"
 #include "engine/core/error.hpp"
 #include "engine/envmap/latlong.hpp"
 #include "engine/prefilter/prefilter_source.hpp"
 #include "engine/projection/cube_face.hpp"
 #include "engine/projection/cube_layout.hpp"
 #include "engine/projection/projection_texels.hpp"
-#include "engine/render/microfacet.hpp"
 #include "support/constant_map.hpp"
 #include "support/real_maps.hpp"
 

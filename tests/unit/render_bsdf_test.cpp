@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "engine/bsdf/bsdf_metallic_roughness.hpp"
+#include "engine/bsdf/bsdf_plastic.hpp"
 #include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/fresnel/conductor.hpp"
 #include "engine/fresnel/dielectric.hpp"
 #include "engine/fresnel/metals.hpp"
-#include "engine/render/bsdf.hpp"
-#include "engine/render/bsdf_metallic_roughness.hpp"
-#include "engine/render/bsdf_plastic.hpp"
+#include "engine/render/material_bsdf.hpp"
 #include "support/chi_square.hpp"
 
 namespace lp::render {

@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <functional>
 
+#include "engine/bsdf/bsdf_plastic.hpp"
+#include "engine/bsdf/microfacet.hpp"
+#include "engine/bsdf/microfacet_albedo.hpp"
 #include "engine/core/constants.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/fresnel/dielectric.hpp"
-#include "engine/render/bsdf_plastic.hpp"
-#include "engine/render/microfacet.hpp"
-#include "engine/render/microfacet_albedo.hpp"
 
 namespace lp::render {
 namespace {

@@ -15,9 +15,9 @@
 // cosine-weighted.
 #include <optional>
 
+#include "engine/bsdf/microfacet.hpp"
+#include "engine/bsdf/microfacet_albedo.hpp"
 #include "engine/core/point2.hpp"
-#include "engine/render/microfacet.hpp"
-#include "engine/render/microfacet_albedo.hpp"
 
 namespace lp::render {
 

@@ -8,7 +8,7 @@
 #include "engine/core/fast_sincos.hpp"
 #include "engine/core/vec3.hpp"
 
-namespace lp::render {
+namespace lp {
 
 struct Disk {
   float x, y;
@@ -48,4 +48,4 @@ inline Vec3 square_to_uniform_sphere(float u1, float u2) {
 }
 inline constexpr float kUniformSpherePdf = 1.0f / (4.0f * kPiF);
 
-}  // namespace lp::render
+}  // namespace lp

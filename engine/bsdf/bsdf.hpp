@@ -3,12 +3,10 @@
 // surface). Every BSDF samples, evaluates and gives a pdf, and the three agree: for a non-delta sample,
 // weight == eval(wo, wi) / pdf(wo, wi). Radiance transport: a camera path carries radiance, so a
 // transmission scales by 1 / eta^2 (radiance is compressed entering a denser medium).
-#include <memory>
 #include <optional>
 
+#include "engine/core/point2.hpp"
 #include "engine/core/vec3.hpp"
-#include "engine/render/path_sampler.hpp"
-#include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
 
@@ -41,8 +39,5 @@ class Bsdf {
 // The non-delta sample of `bsdf` in direction wi, weighted eval / pdf; nullopt when wi is below the
 // surface or its pdf is 0.
 std::optional<BsdfSample> weighted_sample(const Bsdf& bsdf, Vec3 wo, Vec3 wi);
-
-// Throws lp::Error(InvalidArgument) for out-of-range parameters.
-std::unique_ptr<Bsdf> make_bsdf(const Material& material);
 
 }  // namespace lp::render

@@ -1,10 +1,12 @@
-#include "engine/render/bsdf.hpp"
+#include "engine/render/material_bsdf.hpp"
 
-#include "engine/render/bsdf_conductor.hpp"
-#include "engine/render/bsdf_dielectric.hpp"
-#include "engine/render/bsdf_diffuse.hpp"
-#include "engine/render/bsdf_mirror.hpp"
-#include "engine/render/bsdf_plastic.hpp"
+#include <variant>
+
+#include "engine/bsdf/bsdf_conductor.hpp"
+#include "engine/bsdf/bsdf_dielectric.hpp"
+#include "engine/bsdf/bsdf_diffuse.hpp"
+#include "engine/bsdf/bsdf_mirror.hpp"
+#include "engine/bsdf/bsdf_plastic.hpp"
 
 namespace lp::render {
 namespace {
@@ -33,13 +35,6 @@ struct Factory {
 };
 
 }  // namespace
-
-std::optional<BsdfSample> weighted_sample(const Bsdf& bsdf, Vec3 wo, Vec3 wi) {
-  if (wi.z <= 0) return std::nullopt;
-  const float p = bsdf.pdf(wo, wi);
-  if (!(p > 0)) return std::nullopt;
-  return BsdfSample{wi, bsdf.eval(wo, wi) / p, p};
-}
 
 std::unique_ptr<Bsdf> make_bsdf(const Material& material) {
   return std::visit(Factory{}, material);

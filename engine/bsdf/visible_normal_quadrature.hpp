@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/render/microfacet.hpp"
+#include "engine/bsdf/microfacet.hpp"
 
 namespace lp::render {
 

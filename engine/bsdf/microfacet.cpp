@@ -1,4 +1,4 @@
-#include "engine/render/microfacet.hpp"
+#include "engine/bsdf/microfacet.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "engine/render/bsdf_plastic.hpp"
+#include "engine/bsdf/bsdf_plastic.hpp"
 
 #include <utility>
 
 #include "engine/core/constants.hpp"
 #include "engine/fresnel/dielectric.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 namespace {

@@ -1,7 +1,7 @@
-#include "engine/render/bsdf_diffuse.hpp"
+#include "engine/bsdf/bsdf_diffuse.hpp"
 
 #include "engine/core/constants.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 

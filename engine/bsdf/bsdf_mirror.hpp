@@ -1,6 +1,6 @@
 #pragma once
 // A perfect mirror tinted by a colour (a delta lobe).
-#include "engine/render/bsdf.hpp"
+#include "engine/bsdf/bsdf.hpp"
 
 namespace lp::render {
 

@@ -1,4 +1,4 @@
-#include "engine/render/obj_prescan.hpp"
+#include "engine/model/obj_prescan.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 #include "engine/core/error.hpp"
 
-namespace lp::render {
+namespace lp::obj {
 namespace {
 
 struct Line {
@@ -189,4 +189,4 @@ void check_mtl_text(std::string_view text, const std::string& name) {
   for_each_line(text, [&](size_t number, std::string_view line) { checker.mtl_line(number, line); });
 }
 
-}  // namespace lp::render
+}  // namespace lp::obj

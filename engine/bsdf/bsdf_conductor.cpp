@@ -1,4 +1,4 @@
-#include "engine/render/bsdf_conductor.hpp"
+#include "engine/bsdf/bsdf_conductor.hpp"
 
 #include "engine/fresnel/conductor.hpp"
 

@@ -1,4 +1,4 @@
-#include "engine/render/bsdf_metallic_roughness.hpp"
+#include "engine/bsdf/bsdf_metallic_roughness.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "engine/render/microfacet_albedo.hpp"
+#include "engine/bsdf/microfacet_albedo.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "engine/render/visible_normal_quadrature.hpp"
+#include "engine/bsdf/visible_normal_quadrature.hpp"
 
 namespace lp::render {
 namespace {

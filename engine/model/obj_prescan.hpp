@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace lp::render {
+namespace lp::obj {
 
 inline constexpr int kMaxObjFaceVertices = 256;     // more in one polygon is refused
 inline constexpr int kMaxObjExponentDigits = 4;     // 1e9999 is already beyond double
@@ -23,4 +23,4 @@ int64_t check_obj_text(std::string_view text, const std::string& name, int64_t m
 // integer fits an int and no number has a long exponent. Throws lp::Error(Corrupt) naming the line.
 void check_mtl_text(std::string_view text, const std::string& name);
 
-}  // namespace lp::render
+}  // namespace lp::obj

@@ -16,9 +16,9 @@
 // diffuse-like, cosine-weighted; in proportion to their albedos.
 #include <memory>
 
-#include "engine/render/bsdf.hpp"
-#include "engine/render/microfacet_albedo.hpp"
-#include "engine/render/microfacet_multiscatter.hpp"
+#include "engine/bsdf/bsdf.hpp"
+#include "engine/bsdf/microfacet_albedo.hpp"
+#include "engine/bsdf/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 

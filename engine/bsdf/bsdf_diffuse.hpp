@@ -1,6 +1,6 @@
 #pragma once
 // Lambertian reflection with cosine-weighted sampling.
-#include "engine/render/bsdf.hpp"
+#include "engine/bsdf/bsdf.hpp"
 
 namespace lp::render {
 

@@ -1,7 +1,7 @@
-#include "engine/render/microfacet_multiscatter.hpp"
+#include "engine/bsdf/microfacet_multiscatter.hpp"
 
 #include "engine/core/constants.hpp"
-#include "engine/render/warp.hpp"
+#include "engine/sampling/warp.hpp"
 
 namespace lp::render {
 namespace {

@@ -3,8 +3,8 @@
 // roughness is 0, otherwise GGX microfacet reflection with visible-normal sampling and the energy its
 // single scattering loses given back (microfacet_multiscatter.hpp), with F_avg the cosine-weighted mean
 // of the metal's Fresnel reflectance.
-#include "engine/render/bsdf.hpp"
-#include "engine/render/microfacet_multiscatter.hpp"
+#include "engine/bsdf/bsdf.hpp"
+#include "engine/bsdf/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 

@@ -8,9 +8,9 @@
 // Both use GGX alpha = roughness^2, held at kMinModelAlpha or above: a glTF roughness of 0 renders as a
 // very sharp but not a delta lobe, so every model surface takes light samples and the mix stays one
 // smooth lobe set. A part is picked with probability (1 - metallic) / metallic.
-#include "engine/render/bsdf.hpp"
-#include "engine/render/bsdf_plastic.hpp"
-#include "engine/render/microfacet_multiscatter.hpp"
+#include "engine/bsdf/bsdf.hpp"
+#include "engine/bsdf/bsdf_plastic.hpp"
+#include "engine/bsdf/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 

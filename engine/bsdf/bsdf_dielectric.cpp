@@ -1,4 +1,4 @@
-#include "engine/render/bsdf_dielectric.hpp"
+#include "engine/bsdf/bsdf_dielectric.hpp"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // A smooth dielectric boundary (glass): Fresnel-weighted choice between mirror reflection and
 // refraction, total internal reflection included. Outside is z > 0, the inside has index `ior`.
-#include "engine/render/bsdf.hpp"
+#include "engine/bsdf/bsdf.hpp"
 
 namespace lp::render {
 
