@@ -1,5 +1,5 @@
-// The OBJ/MTL model loader on any text: the bytes up to the first NUL are the OBJ, the rest its
-// material library.
+// The OBJ/MTL loader the product uses (pre-scan, tinyobjloader, index and vertex checks) on any text: the
+// bytes up to the first NUL are the OBJ, the rest its material library (none without a NUL).
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -216,7 +216,7 @@ TEST(InputPolicy, ExrThatCannotHoldItsPixelsIsRefusedWithoutTheirMemory) {
 TEST(InputPolicy, ObjInputThatOverflowsTheParserIsRefusedAt400) {
   test::TempDir dir;
   for (const std::string file : {"vw_huge_joint_id.obj", "huge_exponent.obj", "index_over_int.obj"})
-    fs::copy_file(test::fuzz_corpus_path("obj", file), dir.path() / file);
+    fs::copy_file(test::fuzz_corpus_path("obj_model", file), dir.path() / file);
   test::ServerProcess s({"--data-dir", dir.path().string()});
   for (const std::string file : {"vw_huge_joint_id.obj", "huge_exponent.obj", "index_over_int.obj"}) {
     const json scene = {{"objects", json::array({{{"type", "mesh"}, {"path", file}}})}};

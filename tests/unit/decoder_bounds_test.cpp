@@ -174,7 +174,7 @@ TEST(DecoderBounds, EveryCorpusExrCompressionDecodes) {
 }
 
 Model obj(const std::string& file) {
-  const auto bytes = test::read_bytes(test::fuzz_corpus_path("obj", file));
+  const auto bytes = test::read_bytes(test::fuzz_corpus_path("obj_model", file));
   return load_obj_memory(std::string(bytes.begin(), bytes.end()), "", file, {});
 }
 
