@@ -82,23 +82,18 @@ bool parse_command_line(int argc, char** argv, const std::vector<Flag>& flags,
   std::vector<std::pair<const Flag*, std::string>> given;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    const auto named = [&](const std::vector<std::string>& args) {
-      return std::find(args.begin(), args.end(), arg) != args.end();
-    };
-    const bool takes_value = [&] {
-      if (const Action* action = find_by(actions, [&](const Action& a) { return named(a.args); }))
-        return action->takes_value;
-      const Flag* flag = find_by(flags, [&](const Flag& f) { return arg == "--" + f.name; });
-      if (!flag) throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
-      return !flag->value.empty();
-    }();
+    const Action* action = find_by(actions, [&](const Action& a) {
+      return std::find(a.args.begin(), a.args.end(), arg) != a.args.end();
+    });
+    const Flag* flag = action ? nullptr : find_by(flags, [&](const Flag& f) { return arg == "--" + f.name; });
+    if (!action && !flag) throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
+    const bool takes_value = action ? action->takes_value : !flag->value.empty();
     if (takes_value && i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
     const std::string value = takes_value ? argv[++i] : "";
-    if (const Action* action = find_by(actions, [&](const Action& a) { return named(a.args); })) {
-      if (!action->run(value)) return false;
-      continue;
-    }
-    given.emplace_back(find_by(flags, [&](const Flag& f) { return arg == "--" + f.name; }), value);
+    if (!action)
+      given.emplace_back(flag, value);
+    else if (!action->run(value))
+      return false;
   }
   for (const Flag& f : flags)
     if (std::none_of(given.begin(), given.end(), [&](const auto& g) { return g.first == &f; }))

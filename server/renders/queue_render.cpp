@@ -20,7 +20,7 @@ QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest requ
     job->delete_state();
   else if (app.renders.find(replaced->id()).get() == replaced)
     replaced->save_record();
-  return {nullptr, std::move(queued.status)};
+  return {};
 }
 
 }  // namespace lp::server

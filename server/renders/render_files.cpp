@@ -34,10 +34,11 @@ void RenderFiles::save_record(const RenderRecord& record) const {
 bool RenderFiles::save_image(const Image& image, int spp_done, RenderRecord record) {
   if (!store_) return false;
   const std::string file = fmt::format("{}.{}.exr", id_, spp_done);
+  const std::vector<uint8_t> bytes = write_exr(image, ExrCompression::None);  // encoded without the lock
   std::lock_guard lock(mutex_);
   if (removed_) return false;
   try {
-    store_->write_bytes(store_->renders_dir() / file, write_exr(image, ExrCompression::None));
+    store_->write_bytes(store_->renders_dir() / file, bytes);
   } catch (const std::exception& e) {
     spdlog::error("render {}: cannot save its image: {}", id_, e.what());
     return false;

@@ -67,10 +67,10 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   r.status = status;
   r.error = error;
   r.elapsed_s = elapsed_s();
+  r.image_file = files_.image_file();  // not under mutex_: a checkpoint holds the files' lock while it writes
   std::lock_guard lock(mutex_);
   r.spp_done = spp_done_;
   r.ranges_done = ranges_done_;
-  r.image_file = files_.image_file();
   r.envmap_fingerprint = envmap_fingerprint_;
   r.stats = stats_;
   r.render_s = render_s_;
