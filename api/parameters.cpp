@@ -138,6 +138,13 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(enum_doc(request("sampling"), std::optional(settings.sampling)));
   d.push_back(lower_bound_doc(request("seed"), 0, double(settings.seed)));
   d.push_back(range_doc(schema("RenderCamera", {"properties", "fov_deg"}), kFovDeg, camera.fov_deg));
+  const render::CameraFit fit;
+  const auto fit_field = [](const std::string& name) {
+    return schema("RenderCamera", {"properties", "fit", "properties", name});
+  };
+  d.push_back(range_doc(fit_field("azimuth_deg"), kRotationDeg, fit.azimuth_deg));
+  d.push_back(range_doc(fit_field("elevation_deg"), kElevationDeg, fit.elevation_deg));
+  d.push_back(range_doc(fit_field("margin"), kFitMargin, fit.margin));
   d.push_back(range_doc(schema("Vec3", {"items"}), kCoordinate));
   d.push_back(range_doc(schema("RenderColor", {"oneOf", "0"}), kReflectance));
   d.push_back(range_doc(schema("RenderObject", {"oneOf", "type=sphere", "properties", "radius"}), kSize));

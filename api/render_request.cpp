@@ -178,13 +178,68 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
   return object;
 }
 
+// An object index: a whole number, its range checked by the scene's validate().
+std::optional<uint32_t> object_index(const Json& parent, const std::string& prefix) {
+  if (!member(parent, "object")) return std::nullopt;
+  return uint32_t(json_int(parent, "object", 0, 0, std::numeric_limits<uint32_t>::max(), prefix));
+}
+
+render::CameraFit parse_fit(const Json& f, const std::string& prefix) {
+  reject_unknown_fields(f, {"object", "azimuth_deg", "elevation_deg", "margin"}, prefix);
+  render::CameraFit fit;
+  fit.object = object_index(f, prefix);
+  fit.azimuth_deg = json_float(f, "azimuth_deg", fit.azimuth_deg, prefix);
+  fit.elevation_deg = json_float(f, "elevation_deg", fit.elevation_deg, prefix);
+  fit.margin = json_float(f, "margin", fit.margin, prefix);
+  return fit;
+}
+
+// A glTF camera: its index or name alone, or {"camera": index or name, "object": i}.
+render::GltfCameraChoice parse_gltf_camera(const Json& g, const std::string& prefix) {
+  render::GltfCameraChoice choice;
+  const Json* which = &g;
+  if (g.is_object()) {
+    reject_unknown_fields(g, {"camera", "object"}, prefix);
+    choice.object = object_index(g, prefix);
+    which = member(g, "camera");
+    if (!which) throw invalid_field(field_name(prefix, "camera"), "is required");
+  }
+  const std::string field = g.is_object() ? field_name(prefix, "camera") : prefix;
+  if (which->is_string()) {
+    choice.name = which->get<std::string>();
+  } else if (which->is_number_integer() && which->get<int64_t>() >= 0 &&
+             which->get<int64_t>() <= std::numeric_limits<uint32_t>::max()) {
+    choice.index = uint32_t(which->get<int64_t>());
+  } else {
+    throw invalid_field(field, fmt::format("must be a camera's index (a whole number >= 0) or name, got {}",
+                                           describe(*which)));
+  }
+  return choice;
+}
+
 Camera parse_camera(const Json& c, Camera camera) {
   const std::string prefix = "scene.camera";
-  reject_unknown_fields(c, {"position", "look_at", "up", "fov_deg"}, prefix);
+  reject_unknown_fields(c, {"position", "look_at", "up", "fov_deg", "fit", "gltf"}, prefix);
+  const Json* fit = member(c, "fit");
+  const Json* gltf = member(c, "gltf");
+  for (const char* placed : {"position", "look_at", "up"})
+    if ((fit || gltf) && member(c, placed))
+      throw invalid_field(field_name(prefix, placed),
+                          fmt::format("not allowed with {}", field_name(prefix, fit ? "fit" : "gltf")));
+  if (fit && gltf) throw invalid_field(field_name(prefix, "fit"), "not allowed with scene.camera.gltf");
   camera.position = json_vec3(c, "position", prefix).value_or(camera.position);
   camera.look_at = json_vec3(c, "look_at", prefix).value_or(camera.look_at);
   camera.up = json_vec3(c, "up", prefix).value_or(camera.up);
   camera.fov_deg = json_float(c, "fov_deg", camera.fov_deg, prefix);
+  camera.fit.reset();
+  camera.gltf.reset();
+  if (fit) {
+    if (!fit->is_object())
+      throw invalid_field(field_name(prefix, "fit"),
+                          fmt::format("must be an object, got {}", describe(*fit)));
+    camera.fit = parse_fit(*fit, field_name(prefix, "fit"));
+  }
+  if (gltf) camera.gltf = parse_gltf_camera(*gltf, field_name(prefix, "gltf"));
   return camera;
 }
 
@@ -208,7 +263,12 @@ SceneDesc parse_scene(const Json* s, const RequestLimits& limits, std::optional<
     preset = enum_name(chosen);
     scene = render::preset_scene(chosen);
   }
-  if (const Json* c = object_member(*s, "camera", "scene")) scene.camera = parse_camera(*c, scene.camera);
+  if (const Json* c = object_member(*s, "camera", "scene"))
+    scene.camera = parse_camera(*c, scene.camera);
+  else if (std::any_of(scene.objects.begin(), scene.objects.end(), [](const render::SceneObject& o) {
+             return !std::holds_alternative<render::PlaneObject>(o.shape);
+           }))
+    scene.camera.fit = render::CameraFit{};  // objects, no camera: framed from the front, slightly above
   return scene;
 }
 

@@ -10,6 +10,7 @@
 #include "api/parameters.hpp"
 #include "api/params.hpp"
 #include "engine/render/scene_desc.hpp"
+#include "engine/render/scene_view.hpp"
 
 namespace lp::api {
 
@@ -19,6 +20,8 @@ struct RenderRequest {
   render::SceneDesc scene;
   render::Lighting lighting;
   render::RenderSettings settings;
+  // The camera once the scene's models are loaded, and what the view leaves out (set by the server).
+  std::optional<render::SceneView> view;
 };
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits);

@@ -24,6 +24,14 @@ void describe_render(Json& out, const RenderRequest& request, const RenderProgre
   out["samples_per_s"] = progress.render_s > 0 ? double(stats.samples) / progress.render_s : 0.0;
   out["rays_per_s"] = progress.render_s > 0 ? double(stats.rays) / progress.render_s : 0.0;
   out["image_available"] = progress.image_available;
+  if (request.view) {
+    const render::Camera& c = request.view->camera;
+    out["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},
+                     {"look_at", {c.look_at.x, c.look_at.y, c.look_at.z}},
+                     {"up", {c.up.x, c.up.y, c.up.z}},
+                     {"fov_deg", c.fov_deg}};
+    out["warnings"] = request.view->warnings;
+  }
 }
 
 }  // namespace lp::api

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/model/gltf_accessor.hpp"
+#include "engine/model/gltf_cameras.hpp"
 #include "engine/model/gltf_materials.hpp"
 #include "engine/model/gltf_scene.hpp"
 #include "engine/model/gltf_schema.hpp"
@@ -158,7 +159,8 @@ MeshPart read_primitive(const tinygltf::Model& model, const tinygltf::Primitive&
 Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& files,
            ModelTextures& textures, const ModelLimits& limits) {
   const tinygltf::Model model = parse(bytes, name, files);
-  const std::vector<MeshInstance> instances = scene_instances(model);
+  const SceneNodes nodes = scene_nodes(model);
+  const std::vector<MeshInstance>& instances = nodes.meshes;
   int64_t triangles = 0;
   for (const MeshInstance& instance : instances) {
     const auto& mesh = model.meshes[size_t(instance.mesh)];
@@ -193,6 +195,7 @@ Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& 
     }
   }
   if (fallback_used) out.materials.push_back(default_material());
+  out.cameras = read_cameras(model, nodes.cameras);
   return out;
 }
 

@@ -61,8 +61,8 @@ std::vector<int> root_nodes(const tinygltf::Model& model) {
 
 }  // namespace
 
-std::vector<MeshInstance> scene_instances(const tinygltf::Model& model) {
-  std::vector<MeshInstance> out;
+SceneNodes scene_nodes(const tinygltf::Model& model) {
+  SceneNodes out;
   std::vector<bool> visited(model.nodes.size());
   // Depth-first with an explicit stack: a deep hierarchy cannot exhaust the call stack, and since
   // every node is visited at most once the walk is linear in the nodes.
@@ -82,7 +82,12 @@ std::vector<MeshInstance> scene_instances(const tinygltf::Model& model) {
     if (node.mesh >= 0 || node.mesh < -1) {
       if (size_t(node.mesh) >= model.meshes.size())
         corrupt(fmt::format("node {} refers to mesh {}, which does not exist", index, node.mesh));
-      out.push_back({node.mesh, world});
+      out.meshes.push_back({node.mesh, world});
+    }
+    if (node.camera >= 0 || node.camera < -1) {
+      if (size_t(node.camera) >= model.cameras.size())
+        corrupt(fmt::format("node {} refers to camera {}, which does not exist", index, node.camera));
+      out.cameras.push_back({node.camera, world});
     }
     for (int child : node.children) stack.emplace_back(child, world);
   }

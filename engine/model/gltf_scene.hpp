@@ -17,8 +17,19 @@ struct MeshInstance {
   Mat4 to_world;
 };
 
-// Throws lp::Error(Corrupt) for a node, scene or mesh index out of range, a node reached twice (a
-// recursive node graph, or a node with two parents), a malformed or non-finite transform.
-std::vector<MeshInstance> scene_instances(const tinygltf::Model& model);
+// A node holding a camera, which looks down the node's -z with its +y up.
+struct CameraInstance {
+  int camera = -1;
+  Mat4 to_world;
+};
+
+struct SceneNodes {
+  std::vector<MeshInstance> meshes;
+  std::vector<CameraInstance> cameras;
+};
+
+// Throws lp::Error(Corrupt) for a node, scene, mesh or camera index out of range, a node reached twice
+// (a recursive node graph, or a node with two parents), a malformed or non-finite transform.
+SceneNodes scene_nodes(const tinygltf::Model& model);
 
 }  // namespace lp::gltf

@@ -64,6 +64,17 @@ struct Tangent {
   float w = 1;
 };
 
+// A camera the file places (glTF), in the world frame.
+struct ModelCamera {
+  std::string name;
+  uint32_t index = 0;       // in the file's cameras
+  bool perspective = true;  // false: orthographic (listed, not rendered)
+  Vec3 position;
+  Vec3 forward{0, 1, 0};  // unit
+  Vec3 up{0, 0, 1};       // unit
+  float yfov_deg = 0;     // the vertical field of view of a perspective camera
+};
+
 struct Model {
   std::vector<Vec3> positions;  // world space
   std::vector<Vec3> normals;    // per vertex, unit
@@ -75,6 +86,7 @@ struct Model {
   // False: in the world frame (a glTF, converted as model_frame.hpp says). True: in its file's own
   // coordinates, whose up axis the file does not state (OBJ); placing it in a scene says which it is.
   bool up_axis_unstated = false;
+  std::vector<ModelCamera> cameras;  // one per node holding a camera, in the scene's node order
   // The files it was read from, the model file first (none for a model from memory): a copy kept in
   // memory is stale once one of them has changed.
   std::vector<FileStamp> files;

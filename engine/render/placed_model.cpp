@@ -15,16 +15,20 @@ Mat4 file_to_world(const MeshObject& mesh, const Model& model) {
   return up_axis_to_world(mesh.up_axis.value_or(kDefaultUpAxis));
 }
 
+ModelLimits model_limits(const MeshLimits& limits) {
+  ModelLimits m;
+  m.max_triangles = limits.max_triangles;
+  m.max_file_bytes = limits.max_file_bytes;
+  return m;
+}
+
 Model place_model(const MeshObject& mesh, const MeshLimits& limits) {
   check_mesh_transform(mesh);
   Model model;
   if (mesh.model) {
     model = *mesh.model;
   } else {
-    ModelLimits model_limits;
-    model_limits.max_triangles = limits.max_triangles;
-    model_limits.max_file_bytes = limits.max_file_bytes;
-    model = load_model(mesh.path, model_limits);
+    model = load_model(mesh.path, model_limits(limits));
   }
   const Mat4 frame = file_to_world(mesh, model);
   for (Vec3& p : model.positions) p = transform_mesh_point(mesh, frame.point(p));

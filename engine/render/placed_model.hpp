@@ -11,6 +11,9 @@ namespace lp::render {
 // InvalidArgument for up_axis z on a glTF.
 Mat4 file_to_world(const MeshObject& mesh, const Model& model);
 
+// The limits a scene's mesh limits set on loading a model.
+ModelLimits model_limits(const MeshLimits& limits);
+
 // Throws lp::Error as lp::load_model does, and InvalidArgument for a bad transform.
 Model place_model(const MeshObject& mesh, const MeshLimits& limits);
 

@@ -25,6 +25,7 @@
 #include "engine/render/integrator.hpp"
 #include "engine/render/material_bsdf.hpp"
 #include "engine/render/path_sampler.hpp"
+#include "engine/render/scene_view.hpp"
 #include "engine/render/sun_light.hpp"
 
 namespace lp::render {
@@ -89,6 +90,7 @@ struct Renderer::Impl {
   Impl(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& s,
        std::shared_ptr<const EnvMap> envmap)
       : settings(s),
+        camera_desc(scene.camera),
         camera(scene.camera, s.width, s.height),
         bsdfs(make_bsdfs(scene)),
         split(split_sun(std::move(envmap), lighting)),
@@ -196,6 +198,8 @@ struct Renderer::Impl {
   }
 
   RenderSettings settings;
+  Camera camera_desc;
+  std::vector<std::string> warnings;
   PerspectiveCamera camera;
   std::vector<std::unique_ptr<Bsdf>> bsdfs;
   SunSplit split;
@@ -215,7 +219,21 @@ Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const Rende
   scene.validate("scene");
   lighting.validate("lighting");
   settings.validate("settings");
-  impl_ = std::make_unique<Impl>(scene, lighting, settings, std::move(envmap));
+  SceneDesc resolved = scene;
+  if (scene.camera.fit || scene.camera.gltf) load_missing_models(resolved, settings.mesh_limits);
+  SceneView view = resolve_view(resolved, float(settings.width) / float(settings.height));
+  resolved.camera = view.camera;
+  resolved.camera.validate("scene.camera");
+  impl_ = std::make_unique<Impl>(resolved, lighting, settings, std::move(envmap));
+  impl_->warnings = std::move(view.warnings);
+}
+
+const Camera& Renderer::camera() const {
+  return impl_->camera_desc;
+}
+
+const std::vector<std::string>& Renderer::warnings() const {
+  return impl_->warnings;
 }
 
 Renderer::~Renderer() = default;

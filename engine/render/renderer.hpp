@@ -7,6 +7,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
@@ -24,7 +26,7 @@ struct RenderStats {
 class Renderer {
  public:
   // Builds the Embree scene (loads meshes), the camera and the lights. Throws lp::Error on bad input
-  // (InvalidArgument for an unusable scene, NotFound / Corrupt for a mesh file).
+  // (InvalidArgument for an unusable scene or camera, NotFound / Corrupt for a mesh file).
   Renderer(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& settings,
            std::shared_ptr<const EnvMap> envmap);
   ~Renderer();
@@ -61,6 +63,10 @@ class Renderer {
   // Continues an earlier run of the same scene and settings from its mean image over `spp` samples
   // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.
   void resume(const Image& mean, int spp);
+
+  // The camera rendered (a framed or glTF camera resolved) and the view's warnings (scene_view.hpp).
+  const Camera& camera() const;
+  const std::vector<std::string>& warnings() const;
 
   int spp_done() const;  // samples per pixel so far (their mean, rounded down, after adaptive passes)
   Image image() const;   // mean of the finished passes (linear radiance)

@@ -77,11 +77,35 @@ struct SceneObject {
   void validate(const std::string& prefix) const;
 };
 
+// A camera that frames the bounding sphere of the scene's bounded objects (spheres and meshes; planes
+// are unbounded), or of one of them: it looks at the sphere's centre from the direction `azimuth_deg`
+// about +z (0: from the front, -y; 90: from +x) and `elevation_deg` above the horizon, with +z up, at the
+// distance where the sphere's radius times `margin` fills the smaller of the two fields of view.
+struct CameraFit {
+  std::optional<uint32_t> object;  // an index into the scene's objects; all of them when absent
+  float azimuth_deg = 0;
+  float elevation_deg = 15;
+  float margin = 1.05f;
+  void validate(const std::string& prefix) const;
+};
+
+// A perspective camera of a glTF model, by its index in the file's `cameras` or by its name.
+struct GltfCameraChoice {
+  std::optional<uint32_t>
+      object;  // the mesh object holding it; the first whose model has cameras when absent
+  std::optional<uint32_t> index;
+  std::string name;  // used when index is absent
+};
+
 struct Camera {
   Vec3 position{0, -4, 0};
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 0, 1};
   float fov_deg = 40;
+  // Either replaces position, look_at and up (and, for a glTF camera, fov_deg) once the models are
+  // loaded (camera_fit.hpp).
+  std::optional<CameraFit> fit{};
+  std::optional<GltfCameraChoice> gltf{};
   void validate(const std::string& prefix) const;  // also: look_at away from position, up not along the view
 };
 

@@ -56,6 +56,8 @@ void SceneObject::validate(const std::string& prefix) const {
 }
 
 void Camera::validate(const std::string& prefix) const {
+  require(!(fit && gltf), field_path(prefix, "fit"), "not allowed with " + field_path(prefix, "gltf"));
+  if (fit) fit->validate(field_path(prefix, "fit"));
   require_in(field_path(prefix, "position"), position, kCoordinate);
   require_in(field_path(prefix, "look_at"), look_at, kCoordinate);
   require_in(field_path(prefix, "up"), up, kCoordinate);
@@ -68,10 +70,30 @@ void Camera::validate(const std::string& prefix) const {
           "must not be parallel to the viewing direction (look_at - position)");
 }
 
+void CameraFit::validate(const std::string& prefix) const {
+  require_in(field_path(prefix, "azimuth_deg"), azimuth_deg, kRotationDeg);
+  require_in(field_path(prefix, "elevation_deg"), elevation_deg, kElevationDeg);
+  require_in(field_path(prefix, "margin"), margin, kFitMargin);
+}
+
 void SceneDesc::validate(const std::string& prefix) const {
   camera.validate(field_path(prefix, "camera"));
   for (size_t i = 0; i < objects.size(); ++i)
     objects[i].validate(field_path(prefix, fmt::format("objects[{}]", i)));
+  const auto check_object = [&](std::optional<uint32_t> object, const std::string& field, bool mesh_only) {
+    if (!object) return;
+    require(*object < objects.size(), field_path(prefix, field),
+            fmt::format("must name one of the scene's {} objects, got {}", objects.size(), *object));
+    const auto& shape = objects[*object].shape;
+    if (mesh_only)
+      require(std::holds_alternative<MeshObject>(shape), field_path(prefix, field),
+              fmt::format("object {} is not a mesh", *object));
+    else
+      require(!std::holds_alternative<PlaneObject>(shape), field_path(prefix, field),
+              fmt::format("object {} is a plane, which has no bounds to frame", *object));
+  };
+  if (camera.fit) check_object(camera.fit->object, "camera.fit.object", false);
+  if (camera.gltf) check_object(camera.gltf->object, "camera.gltf.object", true);
 }
 
 void Lighting::validate(const std::string& prefix) const {

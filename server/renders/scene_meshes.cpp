@@ -5,8 +5,10 @@
 #include <variant>
 
 #include "api/api_error.hpp"
+#include "api/engine_validation.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/placed_model.hpp"
+#include "engine/render/scene_view.hpp"
 #include "server/assets/mesh_paths.hpp"
 
 namespace lp::server {
@@ -21,6 +23,13 @@ void check_up_axis(const render::MeshObject& mesh, const std::string& prefix) {
 }
 
 }  // namespace
+
+void resolve_view(api::RenderRequest& request) {
+  const auto& s = request.settings;
+  api::as_invalid_field([&] {
+    request.view = render::resolve_view(request.scene, float(s.width) / float(std::max(1, s.height)));
+  });
+}
 
 int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
   return resolve_meshes(scene, app, [&app](size_t, const std::string& path, const std::string& field) {

@@ -19,6 +19,10 @@ namespace lp::server {
 // triangles of all the scene's meshes.
 int64_t resolve_meshes(render::SceneDesc& scene, App& app);
 
+// The request's camera resolved once its models are loaded (a framed or glTF camera) and the view's
+// warnings, in request.view; a 400 naming scene.camera.fit or scene.camera.gltf when it cannot be.
+void resolve_view(api::RenderRequest& request);
+
 // The model file of scene.objects[object], whose mesh path is `path`; throws api::ApiError naming `field`.
 using MeshLocator =
     std::function<std::filesystem::path(size_t object, const std::string& path, const std::string& field)>;

@@ -91,6 +91,7 @@ QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
   try {
     request = api::parse_render_request(record.request, app.options.limits);
     triangles = resolve_meshes(request.scene, app);
+    resolve_view(request);
   } catch (const api::ApiError& e) {
     throw cannot_resume(*job, api::ErrorCode::CannotResume, e.what());
   }

@@ -54,6 +54,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   if (!envmap)
     throw api::invalid_field("envmap", "no environment map '" + api::excerpt(request.envmap) + "' is loaded");
   const int64_t triangles = resolve_meshes(request.scene, app);
+  resolve_view(request);
   const auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles);
   if (!queued.job) return send_queue_full(app.renders, "renders", res);
   send_accepted(render_url(*queued.job), queued.status, res);

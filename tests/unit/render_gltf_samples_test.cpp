@@ -113,8 +113,7 @@ TEST(RenderGltfSamples, BoxTexturedShowsItsLogoThroughItsSamplersWrapModes) {
 // (0, 0.55), (1.1, 0.55) (offsets, UVs (0, 0) to (0.5, 0.5), UV.png) and (-1.1, -0.55), (0, -0.55),
 // (1.1, -0.55) (rotation, scale, all three; UVs (0, 0) to (1, 1), Arrow.png), u along +x and v along -z
 // from the top-left corner. Both textures are clamped.
-const View kTransformView{{{0, -10, 0}, {0, 0, 0}, {0, 0, 1}, 2 * std::atan(0.112f) * 180 / kPiF}, 640,
-                          448};
+const View kTransformView{{{0, -10, 0}, {0, 0, 0}, {0, 0, 1}, 2 * std::atan(0.112f) * 180 / kPiF}, 640, 448};
 
 const Image& transform_sample() {
   static const Image image = kTransformView.render("glTF2/textureTransform/TextureTransformTest.gltf");

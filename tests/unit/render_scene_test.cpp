@@ -36,8 +36,8 @@ TEST(RenderScene, PresetsExistAndRender) {
   for (const char* name : {"sphere", "materials", "furnace"}) {
     const auto scene = scene_preset(name);
     ASSERT_TRUE(scene) << name;
-    for (LightingMode mode : {LightingMode::EnvMap, LightingMode::Uniform, LightingMode::Bsdf, LightingMode::MedianCut,
-                              LightingMode::MedianCutAll}) {
+    for (LightingMode mode : {LightingMode::EnvMap, LightingMode::Uniform, LightingMode::Bsdf,
+                              LightingMode::MedianCut, LightingMode::MedianCutAll}) {
       const Image image = test::render(*scene, lighting(mode, 16), settings(16), constant_map(1.0f), 2);
       for (float v : image.data()) ASSERT_TRUE(std::isfinite(v) && v >= 0) << name;
     }
@@ -147,7 +147,8 @@ TEST(RenderScene, ErrorsHaveKinds) {
   EXPECT_EQ(error_kind([&] { Renderer(scene, bad_lights, settings(8), map); }), ErrorKind::InvalidArgument);
   Lighting bad_intensity = l;
   bad_intensity.intensity = -1;
-  EXPECT_EQ(error_kind([&] { Renderer(scene, bad_intensity, settings(8), map); }), ErrorKind::InvalidArgument);
+  EXPECT_EQ(error_kind([&] { Renderer(scene, bad_intensity, settings(8), map); }),
+            ErrorKind::InvalidArgument);
 
   Renderer ok(scene, l, settings(8), map);
   std::atomic<bool> cancel{false};
@@ -194,15 +195,17 @@ TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
 }
 
 TEST(RenderScene, BlackMapRendersBlackInEveryMode) {
-  for (LightingMode mode : {LightingMode::EnvMap, LightingMode::Uniform, LightingMode::Bsdf, LightingMode::MedianCut,
-                            LightingMode::MedianCutAll}) {
-    const Image image = test::render(*scene_preset("materials"), lighting(mode), settings(16), constant_map(0.0f), 2);
+  for (LightingMode mode : {LightingMode::EnvMap, LightingMode::Uniform, LightingMode::Bsdf,
+                            LightingMode::MedianCut, LightingMode::MedianCutAll}) {
+    const Image image =
+        test::render(*scene_preset("materials"), lighting(mode), settings(16), constant_map(0.0f), 2);
     for (float v : image.data()) ASSERT_EQ(v, 0.0f) << int(mode);
   }
 }
 
 TEST(RenderScene, MaxDepthZeroSeesOnlyTheMap) {
-  const Image image = test::render(*scene_preset("sphere"), lighting(LightingMode::EnvMap), settings(16, 0), constant_map(1.0f), 2);
+  const Image image = test::render(*scene_preset("sphere"), lighting(LightingMode::EnvMap), settings(16, 0),
+                                   constant_map(1.0f), 2);
   EXPECT_EQ(image.at(8, 8).x, 0.0f);  // the sphere: no bounce allowed, no light
   EXPECT_EQ(image.at(0, 0).x, 1.0f);  // the background
 }

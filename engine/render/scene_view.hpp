@@ -1,0 +1,40 @@
+#pragma once
+// The view a scene asks for, once its models are loaded: a framed camera (CameraFit) or a camera of a
+// glTF model becomes a plain position, look_at, up and field of view; and what the caller should be
+// told about that view: a camera inside an object's bounds, or one whose view holds none of the scene's
+// objects (their bounding spheres all outside its field of view; a scene with a plane is not judged).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/bounds.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::render {
+
+struct SceneView {
+  Camera camera;                      // neither fit nor gltf
+  std::vector<std::string> warnings;  // sentences naming the objects as scene.objects[i]
+};
+
+// The world bounds of an object: a sphere's, or a mesh's placed vertices; empty for a plane, which is
+// unbounded, and for a mesh whose model is not loaded.
+Bounds object_bounds(const SceneObject& object);
+
+// The sphere framing the bounded objects (or one of them): centred on their bounds, holding every
+// placed vertex and sphere. Its radius is 0 when nothing is bounded.
+BoundingSphere framing_sphere(const SceneDesc& scene, std::optional<uint32_t> object);
+
+// The camera `fit` places to frame `sphere` with a vertical field of view `fov_deg` in an image of
+// `aspect` = width / height.
+Camera fit_camera(const CameraFit& fit, const BoundingSphere& sphere, float fov_deg, float aspect);
+
+// Throws lp::Error(InvalidArgument) naming `scene.camera.fit` when nothing is bounded to frame, and
+// `scene.camera.gltf` for a camera the model does not have or an orthographic one. Every mesh whose
+// model a fit or a glTF camera needs must be loaded.
+SceneView resolve_view(const SceneDesc& scene, float aspect);
+
+// Models of mesh objects not yet loaded, loaded (what resolve_view needs when the scene names files).
+void load_missing_models(SceneDesc& scene, const MeshLimits& limits);
+
+}  // namespace lp::render
