@@ -17,14 +17,20 @@ bool GltfPbrParams::core_base() const {
 }
 
 GltfPbrBsdf::GltfPbrBsdf(const GltfPbrParams& p)
-    : base_estimate_(std::max(kMinBaseEstimate,
+    : clearcoat_(p.clearcoat),
+      clearcoat_roughness_(p.clearcoat_roughness),
+      base_estimate_(std::max(kMinBaseEstimate,
                               (p.base.base_color.x + p.base.base_color.y + p.base.base_color.z) / 3.0f)) {
   if (p.core_base())
     core_.emplace(p.base.base_color, p.base.metallic, p.base.roughness);
   else
     extended_.emplace(p.base);
-  if (p.clearcoat > 0) coat_.emplace(p.clearcoat, p.clearcoat_roughness, p.clearcoat_normal);
+  set_clearcoat_normal(p.clearcoat_normal);
   if (max_component(p.sheen_color) > 0) sheen_.emplace(p.sheen_color, p.sheen_roughness);
+}
+
+void GltfPbrBsdf::set_clearcoat_normal(Vec3 normal) {
+  if (clearcoat_ > 0) coat_.emplace(clearcoat_, clearcoat_roughness_, normal.z > 0 ? normal : Vec3{0, 0, 1});
 }
 
 const Bsdf& GltfPbrBsdf::base() const {

@@ -39,6 +39,9 @@ class GltfPbrBsdf final : public Bsdf {
   bool has_non_delta_lobe() const override { return true; }
   bool two_sided() const override { return base().two_sided(); }
 
+  // The clearcoat's normal in the local frame (unit; one at or below the surface is taken as z).
+  void set_clearcoat_normal(Vec3 normal);
+
  private:
   struct Choice {
     float coat, sheen, base;
@@ -52,6 +55,7 @@ class GltfPbrBsdf final : public Bsdf {
   std::optional<GltfBaseBsdf> extended_;
   std::optional<ClearcoatLobe> coat_;
   std::optional<SheenLobe> sheen_;
+  float clearcoat_, clearcoat_roughness_;
   float base_estimate_;  // the base's albedo, roughly: its share of the samples
 };
 
