@@ -25,7 +25,7 @@ void expect_quad(const Model& m) {
   ASSERT_EQ(m.vertex_count(), 4u);
   EXPECT_EQ(m.positions[2], (Vec3{3, -3, 4}));  // glTF (1, 1, 0) * 2 + (1, 2, 3) = (3, 4, 3)
   EXPECT_EQ(m.normals[0], (Vec3{0, -1, 0}));    // glTF +z, the front, faces -y
-  EXPECT_FLOAT_EQ(m.uvs[0].y, 1.0f);  // bottom-left corner: v = 1 (glTF's v runs down the image)
+  EXPECT_FLOAT_EQ(m.uvs[0].y, 1.0f);            // bottom-left corner: v = 1 (glTF's v runs down the image)
   // The tangent follows u (+x); the bitangent cross(n, t) * w points up the image (glTF +y, world +z).
   EXPECT_NEAR(m.tangents[0].direction.x, 1.0f, 1e-6f);
   EXPECT_FLOAT_EQ(m.tangents[0].w, 1.0f);
@@ -205,6 +205,18 @@ TEST(GltfModel, MaterialExtensionsAreRead) {
   // -ln(0.5) / 2 in red, nothing absorbed in blue.
   EXPECT_NEAR(l.absorption().x, std::log(2.0) / 2, 1e-6);
   EXPECT_EQ(l.absorption().z, 0.0f);
+}
+
+TEST(GltfModel, MaterialExtensionTexturesAreRead) {
+  const Model m = load_model(test::model_path("quad_lobes.gltf"), {});
+  ASSERT_TRUE(m.materials[0].lobes);
+  const MaterialLobes& l = *m.materials[0].lobes;
+  for (const auto* t : l.textures()) EXPECT_TRUE(*t);
+  EXPECT_FLOAT_EQ(l.sheen_color->transform.scale.x, 2.0f);
+  // Image 0's red texel: sRGB-decoded for the sheen colour, linear for the clearcoat; 1 either way.
+  EXPECT_FLOAT_EQ(l.clearcoat->texture->texel(0, 0, 0).r, 1.0f);
+  EXPECT_NE(l.clearcoat->texture.get(), l.sheen_color->texture.get());  // one texture per colour space
+  EXPECT_GT(m.memory_bytes(), load_model(test::model_path("quad_embedded.gltf"), {}).memory_bytes());
 }
 
 TEST(GltfModel, MaterialExtensionValuesOutOfRangeAreRefused) {
