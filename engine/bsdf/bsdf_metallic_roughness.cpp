@@ -6,17 +6,6 @@
 namespace lp::render {
 namespace {
 
-float model_alpha(float roughness) {
-  const float r = std::clamp(roughness, 0.0f, 1.0f);
-  return std::max(r * r, kMinModelAlpha);
-}
-
-// The dielectric part's coat, shared by every model surface (computed at first use).
-const DielectricCoat& model_coat() {
-  static const DielectricCoat coat(kModelDielectricIor);
-  return coat;
-}
-
 Rgb schlick(Rgb f0, float cos_i) {
   const float m = std::clamp(1.0f - cos_i, 0.0f, 1.0f);
   const float m5 = (m * m) * (m * m) * m;
@@ -29,6 +18,16 @@ Rgb schlick_average(Rgb f0) {
 }
 
 }  // namespace
+
+float model_alpha(float roughness) {
+  const float r = std::clamp(roughness, 0.0f, 1.0f);
+  return std::max(r * r, kMinModelAlpha);
+}
+
+const DielectricCoat& model_coat() {
+  static const DielectricCoat coat(kModelDielectricIor);
+  return coat;
+}
 
 MetallicRoughnessBsdf::MetallicRoughnessBsdf(Rgb base_color, float metallic, float roughness)
     : base_(base_color),

@@ -17,6 +17,12 @@ namespace lp::render {
 inline constexpr float kMinModelAlpha = 1e-2f;
 inline constexpr float kModelDielectricIor = 1.5f;
 
+// GGX alpha of a glTF perceptual roughness: roughness^2, held at kMinModelAlpha or above.
+float model_alpha(float roughness);
+// The coat of index kModelDielectricIor with its albedo tables, shared by every model surface
+// (computed at first use).
+const DielectricCoat& model_coat();
+
 class MetallicRoughnessBsdf final : public Bsdf {
  public:
   // `roughness` is glTF's perceptual roughness; metallic and roughness are clamped to [0, 1].

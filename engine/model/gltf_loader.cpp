@@ -18,7 +18,10 @@ namespace lp::gltf {
 namespace {
 
 // Extensions a file may require that we read.
-constexpr const char* kSupportedRequired[] = {"KHR_texture_transform"};
+constexpr const char* kSupportedRequired[] = {"KHR_texture_transform",  "KHR_materials_ior",
+                                              "KHR_materials_specular", "KHR_materials_transmission",
+                                              "KHR_materials_volume",   "KHR_materials_clearcoat",
+                                              "KHR_materials_sheen"};
 
 // Keeps a data-URI image's decoded bytes (as_is) for engine/texture. Images in buffer views are read
 // later through buffer_view_bytes, which checks the view against its buffer; tinygltf does not.

@@ -6,6 +6,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/model/gltf_accessor.hpp"
+#include "engine/model/gltf_material_lobes.hpp"
 #include "engine/model/model_files.hpp"
 #include "engine/model/tinygltf.hpp"
 
@@ -125,6 +126,10 @@ class MaterialReader {
       out.emissive_factor = {e[0], e[1], e[2]};
     }
     out.emissive = binding(m.emissiveTexture, ColorSpace::Srgb, what + " emissiveTexture");
+    out.lobes = read_material_lobes(
+        m, what, [this](const tinygltf::TextureInfo& info, ColorSpace space, const std::string& name) {
+          return binding(info, space, name);
+        });
     return out;
   }
 

@@ -3,8 +3,10 @@
 // flat arrays (one Embree triangle geometry: `positions` as RTC_FORMAT_FLOAT3 vertices, `indices` as
 // RTC_FORMAT_UINT3 triangles), per-vertex attributes to interpolate at a hit's barycentrics, and a
 // material per triangle. Materials are glTF's metallic-roughness model; OBJ/MTL files are mapped onto it.
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +45,48 @@ struct TextureBinding {
   }
 };
 
+// A glTF material's KHR_materials_ior, _specular, _transmission, _volume, _clearcoat and _sheen
+// parameters (engine/bsdf/bsdf_gltf_pbr.hpp shades them). A texture, where present, multiplies its
+// factor through the channel named beside it. Defaults are the extensions' own.
+struct MaterialLobes {
+  float ior = 1.5f;  // KHR_materials_ior
+  // KHR_materials_specular
+  float specular_factor = 1;
+  std::optional<TextureBinding> specular;  // linear, A
+  Rgb specular_color_factor{1, 1, 1};
+  std::optional<TextureBinding> specular_color;  // sRGB-decoded, RGB
+  // KHR_materials_transmission
+  float transmission_factor = 0;
+  std::optional<TextureBinding> transmission;  // linear, R
+  // KHR_materials_volume: thickness 0 is a thin wall; above, the mesh encloses a volume that absorbs
+  // 1 - attenuationColor over attenuationDistance (infinite: nothing).
+  float thickness_factor = 0;
+  std::optional<TextureBinding> thickness;  // linear, G
+  float attenuation_distance = std::numeric_limits<float>::infinity();
+  Rgb attenuation_color{1, 1, 1};
+  // KHR_materials_clearcoat
+  float clearcoat_factor = 0;
+  std::optional<TextureBinding> clearcoat;  // linear, R
+  float clearcoat_roughness_factor = 0;
+  std::optional<TextureBinding> clearcoat_roughness;  // linear, G
+  std::optional<TextureBinding> clearcoat_normal;     // linear, tangent space, as normalTexture
+  float clearcoat_normal_scale = 1;
+  // KHR_materials_sheen
+  Rgb sheen_color_factor{0, 0, 0};
+  std::optional<TextureBinding> sheen_color;  // sRGB-decoded, RGB
+  float sheen_roughness_factor = 0;
+  std::optional<TextureBinding> sheen_roughness;  // linear, A
+
+  // The absorption coefficient inside the volume, per unit length: -ln(attenuationColor) /
+  // attenuationDistance per channel (0 without absorption).
+  Rgb absorption() const;
+  // Every texture, for counting memory.
+  std::array<const std::optional<TextureBinding>*, 9> textures() const {
+    return {&specular,         &specular_color, &transmission,   &thickness, &clearcoat, &clearcoat_roughness,
+            &clearcoat_normal, &sheen_color,    &sheen_roughness};
+  }
+};
+
 // glTF 2.0 metallic-roughness. A texture, where present, multiplies its factor.
 struct ModelMaterial {
   std::string name;
@@ -55,6 +99,7 @@ struct ModelMaterial {
   float normal_scale = 1;
   Rgb emissive_factor{0, 0, 0};
   std::optional<TextureBinding> emissive;  // sRGB-decoded
+  std::optional<MaterialLobes> lobes;      // when the material uses one of MaterialLobes' extensions
 };
 
 // Tangent direction (unit, perpendicular to the normal) and handedness: the bitangent is

@@ -5,8 +5,9 @@
 // glTF: the default scene (else the first; else every node without a parent) with each node's
 // transform applied down the hierarchy; every primitive of mode triangles, triangle strip or triangle
 // fan (points and lines are skipped); POSITION, NORMAL (flat normals when absent), TEXCOORD_0, TANGENT
-// (generated when absent); metallic-roughness materials with their textures, samplers' wrap modes and
-// KHR_texture_transform. Texture filters are not read: lookups are always trilinear. Textures must use
+// (generated when absent); metallic-roughness materials with their textures, samplers' wrap modes,
+// KHR_texture_transform and KHR_materials_ior, _specular, _transmission, _volume, _clearcoat and
+// _sheen (MaterialLobes). Texture filters are not read: lookups are always trilinear. Textures must use
 // TEXCOORD_0.
 //
 // OBJ/MTL: Kd -> base colour, map_Kd -> base-colour texture (multiplied by Kd, as MTL defines), Ns ->

@@ -29,6 +29,11 @@ bool is_black(Rgb c) {
   return c.x <= 0 && c.y <= 0 && c.z <= 0;
 }
 
+// Beer-Lambert transmittance over a length t of a medium with absorption coefficient sigma.
+Rgb transmittance(Rgb sigma, float t) {
+  return {std::exp(-sigma.x * t), std::exp(-sigma.y * t), std::exp(-sigma.z * t)};
+}
+
 }  // namespace
 
 Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs,
@@ -47,6 +52,7 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
       config_.mode != LightingMode::MedianCut && config_.mode != LightingMode::MedianCutAll;
   EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
   RayCone cone = RayCone::from_pixel(config_.pixel_spread);
+  Rgb absorption{};  // of the volume the path is inside
   for (int depth = 0;; ++depth) {
     ++rays;
     const std::optional<SurfaceHit> hit = depth == 0 ? camera_hit : scene_.intersect(ray);
@@ -57,7 +63,8 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
       break;
     }
     cone.advance(hit->t);
-    std::optional<MetallicRoughnessBsdf> model_bsdf;
+    if (!is_black(absorption)) beta *= transmittance(absorption, hit->t);
+    ModelBsdf model_bsdf;
     const Shading shading = shade(*hit, -ray.direction, cone, model_bsdf);
     result += beta * shading.emission;
     if (depth >= config_.max_depth) break;
@@ -86,6 +93,8 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
     }
     const Vec3 wi = normalize(shading.frame.to_world(s->wi));
     if (!same_side(shading, wi)) break;
+    if (!bsdf.two_sided() && (s->wi.z < 0) != (shading.wo.z < 0))
+      absorption = s->wi.z < 0 ? shading.interior_absorption : Rgb{};
     cone.bounce(hit->curvature, dot(ray.direction, hit->normal), s->delta, s->pdf);
     ray = {EmbreeScene::offset_origin(*hit, wi), wi};
     if (lit_by_map || delta_chain) escape = env_.locate(wi);
@@ -94,23 +103,25 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
 }
 
 Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayCone& cone,
-                                      std::optional<MetallicRoughnessBsdf>& model_bsdf) const {
+                                      ModelBsdf& model_bsdf) const {
   Vec3 ns = hit.shading_normal;
-  Rgb emission{};
+  Rgb emission{}, absorption{};
+  const Bsdf* bsdf = bsdfs_[hit.object].get();
   if (hit.material) {
     const TextureLookup lookup{cone.surface_width(dot(wo, hit.normal)), config_.mipmaps, config_.normal_maps};
     const ModelSurface surface = model_surface(*hit.material, hit, lookup);
-    model_bsdf.emplace(surface.base_color, surface.metallic, surface.roughness);
+    bsdf = &model_bsdf.make(surface);
     ns = surface.shading_normal;
     emission = surface.emission;
+    if (surface.lobes) absorption = surface.lobes->absorption;
   }
-  const Bsdf& bsdf = model_bsdf ? static_cast<const Bsdf&>(*model_bsdf) : *bsdfs_[hit.object];
-  const bool flip = bsdf.two_sided() && dot(wo, hit.normal) < 0;
+  const bool flip = bsdf->two_sided() && dot(wo, hit.normal) < 0;
   const Vec3 ng = flip ? -hit.normal : hit.normal;
   if (flip) ns = -ns;
-  if (bsdf.two_sided() && ns != ng) ns = bend_shading_normal(ns, ng, wo);
+  if (bsdf->two_sided() && ns != ng) ns = bend_shading_normal(ns, ng, wo);
   const Frame frame = Frame::from_normal(ns);
-  return {hit, frame, bsdf, frame.to_local(wo), ng, emission};
+  model_bsdf.orient(frame, flip);
+  return {hit, frame, *bsdf, frame.to_local(wo), ng, emission, absorption};
 }
 
 Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,

@@ -10,6 +10,8 @@
 //   median_cut / median_cut_all: directional lights from median cut, one picked per shading point
 //            (pdf 1/n) or all of them. The map itself then lights nothing: it is only seen by the
 //            camera and through chains of delta (mirror, glass) bounces.
+// A path that refracts into a model's closed volume (KHR_materials_volume) is attenuated by
+// Beer-Lambert, exp(-sigma t), along every segment until it refracts out again.
 // Russian roulette from the fifth bounce on; `max_depth` bounces at most.
 #include <cstdint>
 #include <memory>
@@ -17,11 +19,11 @@
 #include <vector>
 
 #include "engine/bsdf/bsdf.hpp"
-#include "engine/bsdf/bsdf_metallic_roughness.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/env_light.hpp"
 #include "engine/render/frame.hpp"
+#include "engine/render/model_bsdf.hpp"
 #include "engine/render/ray_cone.hpp"
 #include "engine/render/sun_light.hpp"
 
@@ -56,14 +58,17 @@ class Integrator {
     Vec3 wo;         // local
     Vec3 geometric;  // the geometric normal, on the side of wo for two-sided BSDFs
     Rgb emission;
+    Rgb interior_absorption;  // of the volume a one-sided BSDF encloses (behind its normal)
   };
   // The BSDF, frame and emission at a hit; a model's BSDF is built in `model_bsdf`.
-  Shading shade(const SurfaceHit& hit, Vec3 wo_world, const RayCone& cone,
-                std::optional<MetallicRoughnessBsdf>& model_bsdf) const;
-  // False for a direction on the other side of the geometric surface than wo, which a reflecting
-  // BSDF must not reach through a perturbed shading normal (it would leak light through the surface).
+  Shading shade(const SurfaceHit& hit, Vec3 wo_world, const RayCone& cone, ModelBsdf& model_bsdf) const;
+  // False for a direction on the other side of the geometric surface than the shading frame puts it,
+  // which a two-sided BSDF must not reach through a perturbed shading normal (a reflection would leak
+  // light through the surface, a transmission would not cross it).
   static bool same_side(const Shading& s, Vec3 direction) {
-    return !s.bsdf.two_sided() || dot(direction, s.geometric) > 0;
+    if (!s.bsdf.two_sided()) return true;
+    const bool through = dot(direction, s.frame.n) < 0;
+    return (dot(direction, s.geometric) > 0) != through;
   }
   // `env_choice`: the probability that the last hit's light sample went to the map.
   Rgb escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,

@@ -34,6 +34,38 @@ Vec3 mapped_normal(const TextureBinding& map, float scale, const SurfaceHit& hit
   return dot(world, world) > 0 ? normalize(world) : n;
 }
 
+// A texture's channel times its factor, or the factor alone.
+float textured(float factor, const std::optional<TextureBinding>& t, float Rgba::*channel,
+               const SurfaceHit& hit, const TextureLookup& lookup) {
+  return t ? factor * (lookup_texture(*t, hit, lookup).*channel) : factor;
+}
+
+Rgb textured(Rgb factor, const std::optional<TextureBinding>& t, const SurfaceHit& hit,
+             const TextureLookup& lookup) {
+  if (!t) return factor;
+  const Rgb c = lookup_texture(*t, hit, lookup).rgb();
+  return {factor.x * c.x, factor.y * c.y, factor.z * c.z};
+}
+
+SurfaceLobes surface_lobes(const MaterialLobes& m, const SurfaceHit& hit, const TextureLookup& lookup) {
+  constexpr auto kR = &Rgba::r, kG = &Rgba::g, kA = &Rgba::a;
+  SurfaceLobes s;
+  s.ior = m.ior;
+  s.specular = textured(m.specular_factor, m.specular, kA, hit, lookup);
+  s.specular_color = textured(m.specular_color_factor, m.specular_color, hit, lookup);
+  s.transmission = textured(m.transmission_factor, m.transmission, kR, hit, lookup);
+  s.thin_walled = !(textured(m.thickness_factor, m.thickness, kG, hit, lookup) > 0);
+  s.absorption = m.absorption();
+  s.clearcoat = textured(m.clearcoat_factor, m.clearcoat, kR, hit, lookup);
+  s.clearcoat_roughness = textured(m.clearcoat_roughness_factor, m.clearcoat_roughness, kG, hit, lookup);
+  s.clearcoat_normal = m.clearcoat_normal && lookup.normal_maps
+                           ? mapped_normal(*m.clearcoat_normal, m.clearcoat_normal_scale, hit, lookup)
+                           : hit.shading_normal;
+  s.sheen_color = textured(m.sheen_color_factor, m.sheen_color, hit, lookup);
+  s.sheen_roughness = textured(m.sheen_roughness_factor, m.sheen_roughness, kA, hit, lookup);
+  return s;
+}
+
 }  // namespace
 
 Vec3 decode_normal_texel(Rgb texel, float scale) {
@@ -63,6 +95,7 @@ ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const 
   }
   s.shading_normal = m.normal && lookup.normal_maps ? mapped_normal(*m.normal, m.normal_scale, hit, lookup)
                                                     : hit.shading_normal;
+  if (m.lobes) s.lobes = surface_lobes(*m.lobes, hit, lookup);
   return s;
 }
 

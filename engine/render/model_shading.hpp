@@ -1,6 +1,8 @@
 #pragma once
 // A model's material at a hit: its textures looked up at one level per texture (the same for light and
 // BSDF sampling), and the shading normal its normal map gives.
+#include <optional>
+
 #include "engine/model/model.hpp"
 #include "engine/render/embree_scene.hpp"
 
@@ -12,12 +14,28 @@ struct TextureLookup {
   bool normal_maps = true;  // false: the normal texture is ignored
 };
 
+// A material's MaterialLobes at a hit, its textures applied.
+struct SurfaceLobes {
+  float ior = 1.5f;
+  float specular = 1;
+  Rgb specular_color{1, 1, 1};
+  float transmission = 0;
+  bool thin_walled = true;
+  Rgb absorption;  // inside the volume, per unit length
+  float clearcoat = 0;
+  float clearcoat_roughness = 0;
+  Vec3 clearcoat_normal;  // unit, world space, on the side of the hit's shading_normal
+  Rgb sheen_color;
+  float sheen_roughness = 0;
+};
+
 struct ModelSurface {
   Rgb base_color;
   float metallic = 0;
   float roughness = 1;  // perceptual
   Rgb emission;
   Vec3 shading_normal;  // unit, on the side of the hit's shading_normal
+  std::optional<SurfaceLobes> lobes;
 };
 
 ModelSurface model_surface(const ModelMaterial& material, const SurfaceHit& hit, const TextureLookup& lookup);

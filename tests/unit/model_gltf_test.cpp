@@ -3,8 +3,10 @@
 // lp::Error naming the fault for each kind of malformed input.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.hpp"
@@ -23,7 +25,7 @@ void expect_quad(const Model& m) {
   ASSERT_EQ(m.vertex_count(), 4u);
   EXPECT_EQ(m.positions[2], (Vec3{3, -3, 4}));  // glTF (1, 1, 0) * 2 + (1, 2, 3) = (3, 4, 3)
   EXPECT_EQ(m.normals[0], (Vec3{0, -1, 0}));    // glTF +z, the front, faces -y
-  EXPECT_FLOAT_EQ(m.uvs[0].y, 1.0f);  // bottom-left corner: v = 1 (glTF's v runs down the image)
+  EXPECT_FLOAT_EQ(m.uvs[0].y, 1.0f);            // bottom-left corner: v = 1 (glTF's v runs down the image)
   // The tangent follows u (+x); the bitangent cross(n, t) * w points up the image (glTF +y, world +z).
   EXPECT_NEAR(m.tangents[0].direction.x, 1.0f, 1e-6f);
   EXPECT_FLOAT_EQ(m.tangents[0].w, 1.0f);
@@ -151,6 +153,97 @@ TEST(GltfModel, MalformedInputsNameTheirFault) {
                  d["extras"] = nest;
                }),
                ErrorKind::Corrupt, "nested over 64 levels");
+}
+
+Model load_after(const std::function<void(json&)>& change) {
+  json doc = quad_json();
+  change(doc);
+  const std::string text = doc.dump();
+  return load_gltf_memory({reinterpret_cast<const uint8_t*>(text.data()), text.size()}, "quad.gltf", {});
+}
+
+void add_material_extensions(json& d) {
+  json& e = d["materials"][0]["extensions"];
+  e["KHR_materials_ior"] = {{"ior", 1.33}};
+  e["KHR_materials_specular"] = {
+      {"specularFactor", 0.5}, {"specularColorFactor", {2, 1, 0.5}}, {"specularTexture", {{"index", 1}}}};
+  e["KHR_materials_transmission"] = {{"transmissionFactor", 0.75}, {"transmissionTexture", {{"index", 0}}}};
+  e["KHR_materials_volume"] = {
+      {"thicknessFactor", 0.1}, {"attenuationDistance", 2}, {"attenuationColor", {0.5, 0.25, 1}}};
+  e["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1},
+                                  {"clearcoatRoughnessFactor", 0.25},
+                                  {"clearcoatNormalTexture", {{"index", 1}, {"scale", 0.5}}}};
+  e["KHR_materials_sheen"] = {{"sheenColorFactor", {0.1, 0.2, 0.3}},
+                              {"sheenRoughnessFactor", 0.4},
+                              {"sheenColorTexture", {{"index", 0}}}};
+  d["extensionsRequired"] = {"KHR_materials_clearcoat", "KHR_materials_volume"};
+  d["extensionsUsed"] = d["extensionsRequired"];
+}
+
+TEST(GltfModel, MaterialExtensionsAreRead) {
+  EXPECT_FALSE(load_model(test::model_path("quad_embedded.gltf"), {}).materials[0].lobes);
+  const Model m = load_after(add_material_extensions);
+  ASSERT_TRUE(m.materials[0].lobes);
+  const MaterialLobes& l = *m.materials[0].lobes;
+  EXPECT_FLOAT_EQ(l.ior, 1.33f);
+  EXPECT_FLOAT_EQ(l.specular_factor, 0.5f);
+  EXPECT_EQ(l.specular_color_factor, (Rgb{2, 1, 0.5f}));
+  EXPECT_FLOAT_EQ(l.transmission_factor, 0.75f);
+  EXPECT_FLOAT_EQ(l.thickness_factor, 0.1f);
+  EXPECT_FLOAT_EQ(l.attenuation_distance, 2.0f);
+  EXPECT_EQ(l.attenuation_color, (Rgb{0.5f, 0.25f, 1}));
+  EXPECT_FLOAT_EQ(l.clearcoat_factor, 1.0f);
+  EXPECT_FLOAT_EQ(l.clearcoat_roughness_factor, 0.25f);
+  EXPECT_FLOAT_EQ(l.clearcoat_normal_scale, 0.5f);
+  EXPECT_EQ(l.sheen_color_factor, (Rgb{0.1f, 0.2f, 0.3f}));
+  EXPECT_FLOAT_EQ(l.sheen_roughness_factor, 0.4f);
+  ASSERT_TRUE(l.specular && l.transmission && l.clearcoat_normal && l.sheen_color);
+  EXPECT_FALSE(l.thickness || l.clearcoat || l.clearcoat_roughness || l.specular_color || l.sheen_roughness);
+  // The sheen colour is sRGB-decoded (255 -> 1), the transmission texture linear: both image 0.
+  EXPECT_FLOAT_EQ(l.sheen_color->texture->texel(0, 0, 0).r, 1.0f);
+  EXPECT_FLOAT_EQ(l.clearcoat_normal->texture->texel(0, 0, 0).r, 128 / 255.0f);
+  // -ln(0.5) / 2 in red, nothing absorbed in blue.
+  EXPECT_NEAR(l.absorption().x, std::log(2.0) / 2, 1e-6);
+  EXPECT_EQ(l.absorption().z, 0.0f);
+}
+
+TEST(GltfModel, MaterialExtensionTexturesAreRead) {
+  const Model m = load_model(test::model_path("quad_lobes.gltf"), {});
+  ASSERT_TRUE(m.materials[0].lobes);
+  const MaterialLobes& l = *m.materials[0].lobes;
+  for (const auto* t : l.textures()) EXPECT_TRUE(*t);
+  EXPECT_FLOAT_EQ(l.sheen_color->transform.scale.x, 2.0f);
+  // Image 0's red texel: sRGB-decoded for the sheen colour, linear for the clearcoat; 1 either way.
+  EXPECT_FLOAT_EQ(l.clearcoat->texture->texel(0, 0, 0).r, 1.0f);
+  EXPECT_NE(l.clearcoat->texture.get(), l.sheen_color->texture.get());  // one texture per colour space
+  EXPECT_GT(m.memory_bytes(), load_model(test::model_path("quad_embedded.gltf"), {}).memory_bytes());
+}
+
+TEST(GltfModel, MaterialExtensionValuesOutOfRangeAreRefused) {
+  const auto with = [](const char* extension, const char* key, json value) {
+    return error_after([=](json& d) {
+      add_material_extensions(d);
+      d["materials"][0]["extensions"][extension][key] = value;
+    });
+  };
+  expect_error(with("KHR_materials_transmission", "transmissionFactor", 1.5), ErrorKind::Corrupt,
+               "material 0 KHR_materials_transmission transmissionFactor is not a number in [0, 1]");
+  expect_error(with("KHR_materials_clearcoat", "clearcoatFactor", "one"), ErrorKind::Corrupt,
+               "clearcoatFactor is not a number");
+  expect_error(with("KHR_materials_volume", "attenuationDistance", 0), ErrorKind::Corrupt,
+               "attenuationDistance is not a number");
+  expect_error(with("KHR_materials_volume", "attenuationColor", json::array({1, 2, 1})), ErrorKind::Corrupt,
+               "attenuationColor has a component not in [0, 1]");
+  expect_error(with("KHR_materials_sheen", "sheenColorFactor", json::array({1, 1})), ErrorKind::Corrupt,
+               "sheenColorFactor is not an array of three numbers");
+  expect_error(with("KHR_materials_sheen", "sheenColorTexture", json{{"index", 7}}), ErrorKind::Corrupt,
+               "sheenColorTexture refers to texture 7, which does not exist");
+  expect_error(with("KHR_materials_ior", "ior", -1), ErrorKind::Corrupt, "ior is not a number in [0, 10]");
+  expect_error(error_after([](json& d) {
+                 add_material_extensions(d);
+                 d["extensionsRequired"].push_back("KHR_materials_iridescence");
+               }),
+               ErrorKind::Unsupported, "KHR_materials_iridescence");
 }
 
 TEST(GltfModel, NonFiniteValuesAreRefused) {

@@ -1,0 +1,167 @@
+#include "engine/bsdf/bsdf_gltf_base.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/bsdf/bsdf_dielectric.hpp"
+#include "engine/core/constants.hpp"
+#include "engine/fresnel/dielectric.hpp"
+#include "engine/sampling/warp.hpp"
+
+namespace lp::render {
+namespace {
+
+// E_F of the GGX lobe for F = (1 - c)^5, Schlick's grazing term (computed at first use).
+const GgxAlbedo& schlick_tail_albedo() {
+  static const GgxAlbedo table([](double c) {
+    const double m = std::clamp(1.0 - c, 0.0, 1.0);
+    return (m * m) * (m * m) * m;
+  });
+  return table;
+}
+
+Rgb dielectric_f0(float ior, Rgb specular_color, float specular) {
+  const float r = (ior - 1.0f) / (ior + 1.0f);
+  const Rgb f0 = specular_color * (r * r);
+  return Rgb{std::min(f0.x, 1.0f), std::min(f0.y, 1.0f), std::min(f0.z, 1.0f)} * specular;
+}
+
+float mean(Rgb c) {
+  return (c.x + c.y + c.z) / 3.0f;
+}
+
+Vec3 mirror_through_surface(Vec3 w) {
+  return {w.x, w.y, -w.z};
+}
+
+}  // namespace
+
+GltfBaseBsdf::GltfBaseBsdf(const GltfBaseParams& p)
+    : base_(p.base_color),
+      metallic_(std::clamp(p.metallic, 0.0f, 1.0f)),
+      ior_(p.ior),
+      transmission_(std::clamp(p.transmission, 0.0f, 1.0f)),
+      thin_walled_(p.thin_walled),
+      smooth_(p.roughness * p.roughness < kMinModelAlpha),
+      f0_(dielectric_f0(p.ior, p.specular_color, std::clamp(p.specular, 0.0f, 1.0f))),
+      f90_(std::clamp(p.specular, 0.0f, 1.0f)),
+      max_channel_(f0_.x >= f0_.y && f0_.x >= f0_.z ? 0 : (f0_.y >= f0_.z ? 1 : 2)),
+      lobe_(model_alpha(p.roughness)),
+      e1_(ggx_albedo().row(model_alpha(p.roughness))),
+      e5_(schlick_tail_albedo().row(model_alpha(p.roughness))),
+      ms_fresnel_(lobe_.multiscatter_fresnel(f0_ + (Rgb{f90_, f90_, f90_} - f0_) * (1.0f / 21.0f))),
+      specular_average_(f0_[max_channel_] * (e1_.average() - e5_.average()) + f90_ * e5_.average() +
+                        ms_fresnel_[max_channel_] * lobe_.multiscatter_average()),
+      metal_(p.base_color, 1.0f, p.roughness) {}
+
+float GltfBaseBsdf::specular_albedo(float cos_o) const {
+  const int c = max_channel_;
+  return f0_[c] * (e1_(cos_o) - e5_(cos_o)) + f90_ * e5_(cos_o) +
+         ms_fresnel_[c] * lobe_.multiscatter_albedo(cos_o);
+}
+
+GltfBaseBsdf::Choice GltfBaseBsdf::choice(float cos_o) const {
+  const float rest = 1.0f - metallic_;
+  const float es = specular_albedo(cos_o);
+  const float d = (1.0f - es) * (1.0f - transmission_) * mean(base_);
+  const float t = (1.0f - es) * transmission_ * mean(base_);
+  const float total = es + d + t;
+  if (!(total > 0)) return {metallic_, rest, 0, 0};
+  return {metallic_, rest * es / total, rest * d / total, rest * t / total};
+}
+
+Rgb GltfBaseBsdf::schlick(float cos_d) const {
+  const float m = std::clamp(1.0f - cos_d, 0.0f, 1.0f);
+  const float m5 = (m * m) * (m * m) * m;
+  return f0_ + (Rgb{f90_, f90_, f90_} - f0_) * m5;
+}
+
+Rgb GltfBaseBsdf::eval_specular(Vec3 wo, Vec3 wi) const {
+  return lobe_.eval(
+      wo, wi, [this](float cos_d) { return schlick(cos_d); }, ms_fresnel_);
+}
+
+Rgb GltfBaseBsdf::eval_diffuse(Vec3 wo, Vec3 wi) const {
+  const float t =
+      (1.0f - specular_albedo(wo.z)) * (1.0f - specular_albedo(wi.z)) / (kPiF * (1.0f - specular_average_));
+  return base_ * ((1.0f - transmission_) * t * wi.z);
+}
+
+Rgb GltfBaseBsdf::eval_thin_transmission(Vec3 wo, Vec3 wi) const {
+  const auto white = [](float) { return Rgb{1, 1, 1}; };
+  const Rgb lobe = lobe_.eval(wo, mirror_through_surface(wi), white, Rgb{1, 1, 1});
+  return base_ * lobe * (transmission_ * (1.0f - specular_albedo(wo.z)));
+}
+
+Rgb GltfBaseBsdf::eval(Vec3 wo, Vec3 wi) const {
+  if (wo.z <= 0 || wi.z == 0) return {};
+  const float rest = 1.0f - metallic_;
+  if (wi.z < 0) {
+    if (!thin_walled_ || smooth_ || transmission_ <= 0) return {};
+    return eval_thin_transmission(wo, wi) * rest;
+  }
+  Rgb f{};
+  if (metallic_ > 0) f += metal_.eval(wo, wi) * metallic_;
+  if (rest > 0) f += (eval_specular(wo, wi) + eval_diffuse(wo, wi)) * rest;
+  return f;
+}
+
+float GltfBaseBsdf::pdf(Vec3 wo, Vec3 wi) const {
+  if (wo.z <= 0 || wi.z == 0) return 0;
+  const Choice c = choice(wo.z);
+  if (wi.z < 0) {
+    if (!thin_walled_ || smooth_) return 0;
+    return c.transmission * lobe_.pdf(wo, mirror_through_surface(wi));
+  }
+  float p = c.specular * lobe_.pdf(wo, wi) + c.diffuse * cosine_hemisphere_pdf(wi.z);
+  if (metallic_ > 0) p += c.metal * metal_.pdf(wo, wi);
+  return p;
+}
+
+BsdfSample GltfBaseBsdf::weighted(Vec3 wo, Vec3 wi) const {
+  const float p = pdf(wo, wi);
+  if (!(p > 0)) return {wi, {}, 0};
+  return {wi, eval(wo, wi) / p, p};
+}
+
+// The delta transmissions: straight on through a smooth thin wall, refracted into a thick one.
+std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float probability) const {
+  const Rgb tint = base_ * (transmission_ * (1.0f - specular_albedo(wo.z)) * (1.0f - metallic_));
+  if (thin_walled_ && smooth_) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
+  const std::optional<double> cos_t = transmitted_cos(wo.z, 1.0, ior_);
+  if (!cos_t) return std::nullopt;
+  const float eta = ior_;
+  const Vec3 wi = normalize(Vec3{-wo.x / eta, -wo.y / eta, -float(*cos_t)});
+  return BsdfSample{wi, tint / (probability * eta * eta), probability, eta, true};
+}
+
+std::optional<BsdfSample> GltfBaseBsdf::sample_from_inside(Vec3 wo, float u_lobe) const {
+  return DielectricBsdf(ior_).sample(wo, u_lobe, {});
+}
+
+std::optional<BsdfSample> GltfBaseBsdf::sample(Vec3 wo, float u_lobe, Point2 u) const {
+  if (wo.z < 0 && !two_sided()) return sample_from_inside(wo, u_lobe);
+  if (wo.z <= 0) return std::nullopt;
+  const Choice c = choice(wo.z);
+  std::optional<Vec3> wi;
+  if (u_lobe < c.metal) {
+    const std::optional<BsdfSample> s = metal_.sample(wo, u_lobe / c.metal, u);
+    if (s) wi = s->wi;
+  } else if (u_lobe - c.metal < c.specular) {
+    wi = lobe_.sample(wo, (u_lobe - c.metal) / c.specular, u);
+  } else if (u_lobe - c.metal < c.specular + c.diffuse) {
+    wi = square_to_cosine_hemisphere(u.x, u.y);
+  } else {
+    if (!(c.transmission > 0)) return std::nullopt;
+    if (!thin_walled_ || smooth_) return sample_transmission(wo, c.transmission);
+    const float v = (u_lobe - c.metal - c.specular - c.diffuse) / c.transmission;
+    const std::optional<Vec3> m = lobe_.sample(wo, std::clamp(v, 0.0f, 0.99999994f), u);
+    if (m) wi = mirror_through_surface(*m);
+  }
+  if (!wi || wi->z == 0) return std::nullopt;
+  const BsdfSample s = weighted(wo, *wi);
+  if (!(s.pdf > 0)) return std::nullopt;
+  return s;
+}
+
+}  // namespace lp::render
