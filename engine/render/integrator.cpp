@@ -98,7 +98,8 @@ Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayC
   Vec3 ns = hit.shading_normal;
   Rgb emission{};
   if (hit.material) {
-    const TextureLookup lookup{cone.surface_width(dot(wo, hit.normal)), config_.mipmaps, config_.normal_maps};
+    const TextureLookup lookup{cone.surface_footprint(wo, hit.normal), config_.mipmaps, config_.normal_maps,
+                               config_.texture_anisotropy};
     const ModelSurface surface = model_surface(*hit.material, hit, lookup);
     model_bsdf.emplace(surface.base_color, surface.metallic, surface.roughness);
     ns = surface.shading_normal;

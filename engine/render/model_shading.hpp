@@ -1,15 +1,17 @@
 #pragma once
-// A model's material at a hit: its textures looked up at one level per texture (the same for light and
-// BSDF sampling), and the shading normal its normal map gives.
+// A model's material at a hit: its textures filtered over the ray cone's footprint (the same for light
+// and BSDF sampling), and the shading normal its normal map gives.
 #include "engine/model/model.hpp"
 #include "engine/render/embree_scene.hpp"
+#include "engine/render/ray_cone.hpp"
 
 namespace lp::render {
 
 struct TextureLookup {
-  float surface_width = 0;  // the ray cone's width on the surface (world units)
-  bool mipmaps = true;      // false: level 0
-  bool normal_maps = true;  // false: the normal texture is ignored
+  SurfaceFootprint footprint;                    // the ray cone's ellipse on the surface (world units)
+  bool mipmaps = true;                           // false: level 0
+  bool normal_maps = true;                       // false: the normal texture is ignored
+  float max_anisotropy = kMaxTextureAnisotropy;  // 1: one probe at the level of the longest diameter
 };
 
 struct ModelSurface {
