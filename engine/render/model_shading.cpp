@@ -9,12 +9,6 @@ namespace {
 // Smallest height of the bent mirror direction above the geometric surface.
 inline constexpr float kMinReflectionHeight = 0.01f;
 
-// The footprint in vertex UVs: each diameter's change of u and v.
-UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& f) {
-  return {{dot(hit.du_dp, f.across), dot(hit.dv_dp, f.across)},
-          {dot(hit.du_dp, f.along), dot(hit.dv_dp, f.along)}};
-}
-
 Rgba lookup_texture(const TextureBinding& binding, const SurfaceHit& hit, const TextureLookup& lookup) {
   if (!lookup.mipmaps) return binding.sample(hit.uv, 0.0f);
   return binding.sample(hit.uv, uv_footprint(hit, lookup.footprint), lookup.max_anisotropy);
@@ -40,6 +34,11 @@ Vec3 decode_normal_texel(Rgb texel, float scale) {
   const float x = snap_to_zero(2.0f * texel.x - 1.0f), y = snap_to_zero(2.0f * texel.y - 1.0f);
   const float z = 2.0f * texel.z - 1.0f;
   return {x * scale, y * scale, z};
+}
+
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& f) {
+  return {{dot(hit.du_dp, f.across), dot(hit.dv_dp, f.across)},
+          {dot(hit.du_dp, f.along), dot(hit.dv_dp, f.along)}};
 }
 
 ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const TextureLookup& lookup) {

@@ -22,6 +22,9 @@ struct ModelSurface {
   Vec3 shading_normal;  // unit, on the side of the hit's shading_normal
 };
 
+// A surface footprint in the hit triangle's vertex UVs: each diameter's change of u and v.
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& footprint);
+
 ModelSurface model_surface(const ModelMaterial& material, const SurfaceHit& hit, const TextureLookup& lookup);
 
 // The tangent-space normal a normal-map texel encodes, (2 rgb - 1) scaled in x and y. An 8-bit map
