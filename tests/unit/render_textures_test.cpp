@@ -76,7 +76,7 @@ TEST(RenderTextures, MipmapsQuietTheFarRegionOfAGrazingCheckerboard) {
   std::printf(
       "grazing checkerboard, rows %d-%d: variance mipmaps on %.5f, off %.5f, ratio %.1f; means %.3f %.3f\n",
       y0, y1, var_on, var_off, var_off / var_on, channel_mean(a, y0, y1), channel_mean(b, y0, y1));
-  EXPECT_GT(var_off / var_on, 3.0);  // measured 4.6 (path-tracing noise remains with mipmaps on)
+  EXPECT_GT(var_off / var_on, 3.0);  // measured 17.7 (path-tracing noise remains with mipmaps on)
   EXPECT_NEAR(channel_mean(a, y0, y1), channel_mean(b, y0, y1), 0.1 * channel_mean(b, y0, y1));
 }
 
