@@ -38,10 +38,10 @@ struct TextureBinding {
   TextureTransform transform;
 
   Rgba sample(Point2 uv, float level) const { return texture->sample(transform.apply(uv), level, sampler); }
-  // The mip level for a footprint `uv_width` wide in the vertex UVs: the transform's scale widens it.
-  float level_for_footprint(float uv_width) const {
-    return texture->level_for_footprint(uv_width *
-                                        std::sqrt(std::abs(transform.scale.x * transform.scale.y)));
+  // Over a footprint in the vertex UVs: the transform scales and turns its axes as it does the UVs.
+  Rgba sample(Point2 uv, const UvFootprint& footprint, float max_anisotropy) const {
+    const UvFootprint f{transform.apply_to_vector(footprint.a), transform.apply_to_vector(footprint.b)};
+    return texture->sample(transform.apply(uv), f, max_anisotropy, sampler);
   }
 };
 

@@ -222,6 +222,21 @@ SurfaceHit EmbreeScene::surface_hit(const Ray& r, const RawHit& raw) const {
   return hit;
 }
 
+namespace {
+
+// With n = e1 x e2, the vectors (e2 x n) / |n|^2 and (n x e1) / |n|^2 are the plane's dual basis of
+// e1, e2 (each has dot 1 with its own edge and 0 with the other): the gradient of u is their
+// combination by u's changes along the edges, and so is v's.
+void set_uv_gradients(Vec3 e1, Vec3 e2, Vec3 n, Point2 d1, Point2 d2, SurfaceHit& hit) {
+  const float nn = dot(n, n);
+  if (!(nn > 0)) return;
+  const Vec3 g1 = cross(e2, n) / nn, g2 = cross(n, e1) / nn;
+  hit.du_dp = g1 * d1.x + g2 * d2.x;
+  hit.dv_dp = g1 * d1.y + g2 * d2.y;
+}
+
+}  // namespace
+
 void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& hit) const {
   const Model& m = o.model;
   const size_t triangle = raw.primitive;
@@ -241,9 +256,7 @@ void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& 
   if (o.model_materials) hit.material = &m.materials[m.triangle_materials[triangle]];
   const Point2 ta = m.uvs[tri[0]], tb = m.uvs[tri[1]], tc = m.uvs[tri[2]];
   hit.uv = {ta.x * w0 + tb.x * w1 + tc.x * w2, ta.y * w0 + tb.y * w1 + tc.y * w2};
-  const float uv_area = std::abs((tb.x - ta.x) * (tc.y - ta.y) - (tc.x - ta.x) * (tb.y - ta.y));
-  const float world_area = length(n);
-  hit.uv_density = world_area > 0 ? std::sqrt(uv_area / world_area) : 0.0f;
+  set_uv_gradients(b - a, c - a, n, {tb.x - ta.x, tb.y - ta.y}, {tc.x - ta.x, tc.y - ta.y}, hit);
   const Tangent &t0 = m.tangents[tri[0]], &t1 = m.tangents[tri[1]], &t2 = m.tangents[tri[2]];
   const Vec3 t = t0.direction * w0 + t1.direction * w1 + t2.direction * w2;
   const Vec3 t_perp = t - hit.shading_normal * dot(t, hit.shading_normal);  // Gram-Schmidt

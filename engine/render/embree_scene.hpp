@@ -26,12 +26,13 @@ struct SurfaceHit {
   Vec3 shading_normal;  // unit interpolated vertex normal (the geometric one on spheres and planes)
   float curvature = 0;  // how fast the shading normal turns along the surface, radians per unit length
   // Mesh objects only: the model's material of the triangle (null: the object's own material), the
-  // texture coordinates, the tangent (unit, perpendicular to shading_normal) and the triangle's texture
-  // coordinates per unit of length, sqrt(uv area / world area).
+  // texture coordinates, the tangent (unit, perpendicular to shading_normal) and the gradients of u and
+  // v over the triangle (in its plane: a step e along it changes u by dot(du_dp, e); zero on a
+  // triangle without uv area).
   const ModelMaterial* material = nullptr;
   Point2 uv;
   Tangent tangent;
-  float uv_density = 0;
+  Vec3 du_dp{0, 0, 0}, dv_dp{0, 0, 0};
 };
 
 class EmbreeScene {

@@ -108,7 +108,8 @@ Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayC
   Rgb emission{}, absorption{};
   const Bsdf* bsdf = bsdfs_[hit.object].get();
   if (hit.material) {
-    const TextureLookup lookup{cone.surface_width(dot(wo, hit.normal)), config_.mipmaps, config_.normal_maps};
+    const TextureLookup lookup{cone.surface_footprint(wo, hit.normal), config_.mipmaps, config_.normal_maps,
+                               config_.texture_anisotropy};
     const ModelSurface surface = model_surface(*hit.material, hit, lookup);
     bsdf = &model_bsdf.make(surface);
     ns = surface.shading_normal;

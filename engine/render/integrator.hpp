@@ -36,6 +36,7 @@ struct IntegratorConfig {
   float pixel_spread = 0;   // the camera's ray cone angle per pixel (radians)
   bool mipmaps = true;      // texture levels from ray cones (else level 0)
   bool normal_maps = true;
+  float texture_anisotropy = kMaxTextureAnisotropy;  // RenderSettings::texture_anisotropy
 };
 
 class Integrator {

@@ -9,15 +9,9 @@ namespace {
 // Smallest height of the bent mirror direction above the geometric surface.
 inline constexpr float kMinReflectionHeight = 0.01f;
 
-float texture_level(const TextureBinding& binding, const TextureLookup& lookup, float uv_density) {
-  if (!lookup.mipmaps) return 0.0f;
-  const Point2 scale = binding.transform.scale;
-  const float uv_width = lookup.surface_width * uv_density * std::sqrt(std::abs(scale.x * scale.y));
-  return binding.texture->level_for_footprint(uv_width);
-}
-
 Rgba lookup_texture(const TextureBinding& binding, const SurfaceHit& hit, const TextureLookup& lookup) {
-  return binding.sample(hit.uv, texture_level(binding, lookup, hit.uv_density));
+  if (!lookup.mipmaps) return binding.sample(hit.uv, 0.0f);
+  return binding.sample(hit.uv, uv_footprint(hit, lookup.footprint), lookup.max_anisotropy);
 }
 
 float snap_to_zero(float c) {
@@ -72,6 +66,11 @@ Vec3 decode_normal_texel(Rgb texel, float scale) {
   const float x = snap_to_zero(2.0f * texel.x - 1.0f), y = snap_to_zero(2.0f * texel.y - 1.0f);
   const float z = 2.0f * texel.z - 1.0f;
   return {x * scale, y * scale, z};
+}
+
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& f) {
+  return {{dot(hit.du_dp, f.across), dot(hit.dv_dp, f.across)},
+          {dot(hit.du_dp, f.along), dot(hit.dv_dp, f.along)}};
 }
 
 ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const TextureLookup& lookup) {

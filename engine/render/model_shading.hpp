@@ -1,17 +1,19 @@
 #pragma once
-// A model's material at a hit: its textures looked up at one level per texture (the same for light and
-// BSDF sampling), and the shading normal its normal map gives.
+// A model's material at a hit: its textures filtered over the ray cone's footprint (the same for light
+// and BSDF sampling), and the shading normal its normal map gives.
 #include <optional>
 
 #include "engine/model/model.hpp"
 #include "engine/render/embree_scene.hpp"
+#include "engine/render/ray_cone.hpp"
 
 namespace lp::render {
 
 struct TextureLookup {
-  float surface_width = 0;  // the ray cone's width on the surface (world units)
-  bool mipmaps = true;      // false: level 0
-  bool normal_maps = true;  // false: the normal texture is ignored
+  SurfaceFootprint footprint;                    // the ray cone's ellipse on the surface (world units)
+  bool mipmaps = true;                           // false: level 0
+  bool normal_maps = true;                       // false: the normal texture is ignored
+  float max_anisotropy = kMaxTextureAnisotropy;  // 1: one probe at the level of the longest diameter
 };
 
 // A material's MaterialLobes at a hit, its textures applied.
@@ -37,6 +39,9 @@ struct ModelSurface {
   Vec3 shading_normal;  // unit, on the side of the hit's shading_normal
   std::optional<SurfaceLobes> lobes;
 };
+
+// A surface footprint in the hit triangle's vertex UVs: each diameter's change of u and v.
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& footprint);
 
 ModelSurface model_surface(const ModelMaterial& material, const SurfaceHit& hit, const TextureLookup& lookup);
 

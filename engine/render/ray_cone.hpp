@@ -6,8 +6,9 @@
 // Why cones rather than ray differentials: a cone is two floats per path and needs no derivatives of
 // the BSDF sampling, and it still widens with distance, obliquity, curvature and roughness, which is
 // what picks the level. The cone starts at the pinhole with the spread angle of one pixel; its width
-// at a hit is width + spread * t; there a texture sees the footprint width / |cos| on the surface,
-// which the triangle's uv density turns into texture coordinates (the level is log2 of that in texels).
+// at a hit is width + spread * t; there a texture sees the cone's cross-section drawn out on the
+// surface, an ellipse as wide as the cone across the ray and width / |cos| long along it, which the
+// triangle's uv gradients turn into texture coordinates (texture_footprint.hpp filters over it).
 // A bounce widens the spread by the surface curvature (a mirror of curvature k turns a beam of width w
 // by k w, and reflection doubles it) and by the lobe: the sampled direction's pdf stands for a solid
 // angle 1 / pdf, the cone of that solid angle has spread 2 sqrt(1 / (pi pdf)); delta lobes add nothing.
@@ -15,8 +16,16 @@
 #include <cmath>
 
 #include "engine/core/constants.hpp"
+#include "engine/core/vec3.hpp"
+#include "engine/render/frame.hpp"
 
 namespace lp::render {
+
+// Two perpendicular diameters of the ellipse a cone covers on a surface, in the surface's plane.
+struct SurfaceFootprint {
+  Vec3 across;  // perpendicular to the ray: the cone's width
+  Vec3 along;   // the ray's direction projected on the surface: the width / |cos|
+};
 
 struct RayCone {
   float width = 0;   // at the current origin
@@ -30,6 +39,16 @@ struct RayCone {
   // The width the cone covers on a surface met at `cos_incidence` (cosine between ray and normal).
   float surface_width(float cos_incidence) const {
     return std::abs(width) / std::max(std::abs(cos_incidence), kMinCos);
+  }
+
+  // The footprint on a surface of unit normal `normal` met by a ray of unit `direction`. Facing the
+  // surface, the two diameters are equal and their directions arbitrary.
+  SurfaceFootprint surface_footprint(Vec3 direction, Vec3 normal) const {
+    const float cos_incidence = dot(direction, normal);
+    const Vec3 projected = direction - normal * cos_incidence;
+    const Vec3 along =
+        dot(projected, projected) > 1e-12f ? normalize(projected) : Frame::from_normal(normal).s;
+    return {cross(normal, along) * std::abs(width), along * surface_width(cos_incidence)};
   }
 
   void bounce(float curvature, float cos_incidence, bool delta, float pdf) {

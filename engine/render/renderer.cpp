@@ -100,9 +100,9 @@ struct Renderer::Impl {
         lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights)
                                           : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),
-        integrator(
-            geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
-            {lighting.mode, s.max_depth, lighting.visible, camera.pixel_spread(), s.mipmaps, s.normal_maps}),
+        integrator(geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
+                   {lighting.mode, s.max_depth, lighting.visible, camera.pixel_spread(), s.mipmaps,
+                    s.normal_maps, s.texture_anisotropy}),
         film(s.width, s.height),
         tiles_x((s.width + kTileSize - 1) / kTileSize),
         tiles_y((s.height + kTileSize - 1) / kTileSize) {}

@@ -170,6 +170,9 @@ struct RenderSettings {
   MeshLimits mesh_limits;
   bool mipmaps = true;      // texture and map levels chosen by ray cones (else level 0 everywhere)
   bool normal_maps = true;  // tangent-space normal maps perturb the shading normal
+  // The longest texture footprint over its width before it is widened (1: isotropic levels, as wide
+  // as the footprint is long). Not a request field: the engine's tests compare filters with it.
+  float texture_anisotropy = kMaxTextureAnisotropy;
   void validate(const std::string& prefix) const;
 };
 

@@ -111,6 +111,8 @@ void RenderSettings::validate(const std::string& prefix) const {
   require(height >= 1, field_path(prefix, "height"), fmt::format("must be at least 1, got {}", height));
   require(spp >= 1, field_path(prefix, "spp"), fmt::format("must be at least 1, got {}", spp));
   require_in(field_path(prefix, "max_depth"), max_depth, kMaxDepth);
+  require(texture_anisotropy >= 1, field_path(prefix, "texture_anisotropy"),
+          fmt::format("must be at least 1, got {}", texture_anisotropy));
 }
 
 }  // namespace lp::render

@@ -57,6 +57,27 @@ Rgba Texture::sample(Point2 uv, float level, const TextureSampler& sampler) cons
   return lerp(a, bilinear(l0 + 1, uv, sampler), t);
 }
 
+// Probes of the minor width whose centres span the major width less one minor width cover the ellipse
+// end to end without gaps; their number grows continuously from one for a round footprint.
+Rgba Texture::sample(Point2 uv, const UvFootprint& footprint, float max_anisotropy,
+                     const TextureSampler& sampler) const {
+  const FootprintAxes axes = principal_axes(footprint);
+  const float minor = std::max(axes.minor_width, axes.major_width / max_anisotropy);
+  const float level = level_for_footprint(minor);
+  const float ratio = axes.major_width / minor;
+  const int probes = ratio > 1 ? int(std::ceil(std::min(ratio, max_anisotropy))) : 1;  // also NaN
+  if (probes == 1) return sample(uv, level, sampler);
+  const float span = axes.major_width - minor, step = span / float(probes - 1);
+  Rgba sum{0, 0, 0, 0};
+  for (int i = 0; i < probes; ++i) {
+    const float s = step * float(i) - 0.5f * span;
+    const Rgba t = sample({uv.x + axes.major.x * s, uv.y + axes.major.y * s}, level, sampler);
+    sum = {sum.r + t.r, sum.g + t.g, sum.b + t.b, sum.a + t.a};
+  }
+  const float w = 1.0f / float(probes);
+  return {sum.r * w, sum.g * w, sum.b * w, sum.a * w};
+}
+
 int64_t Texture::memory_bytes() const {
   int64_t bytes = 0;
   for (const MipLevel& l : levels_) bytes += int64_t(l.texels.size() * sizeof(float));

@@ -8,6 +8,7 @@
 #include "engine/core/point2.hpp"
 #include "engine/core/vec3.hpp"
 #include "engine/texture/mip_pyramid.hpp"
+#include "engine/texture/texture_footprint.hpp"
 #include "engine/texture/wrap_mode.hpp"
 
 namespace lp {
@@ -34,6 +35,11 @@ class Texture {
 
   // Trilinear: bilinear in the two levels around `level` (fractional, clamped to the pyramid), blended.
   Rgba sample(Point2 uv, float level, const TextureSampler& sampler = {}) const;
+  // Over an elliptical footprint: trilinear probes spread along its major axis, each at the level of
+  // the minor width, their mean. The ellipse is first made no more than `max_anisotropy` times longer
+  // than wide (by widening it); a round footprint takes one probe, the same as sample(uv, level).
+  Rgba sample(Point2 uv, const UvFootprint& footprint, float max_anisotropy,
+              const TextureSampler& sampler = {}) const;
   // Bilinear in level 0 only (no mip mapping).
   Rgba sample_bilinear(Point2 uv, const TextureSampler& sampler = {}) const {
     return bilinear(0, uv, sampler);

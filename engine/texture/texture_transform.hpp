@@ -21,9 +21,14 @@ struct TextureTransform {
   // TextureTransformTest sample's markers define; the GLSL listing's mat3, read column-major, is its
   // transpose (an erratum of the listing, KhronosGroup/glTF issue 1563).
   Point2 apply(Point2 uv) const {
+    const Point2 p = apply_to_vector(uv);
+    return {p.x + offset.x, p.y + offset.y};
+  }
+  // A difference of two texture coordinates (a footprint's axis): scaled and rotated, not offset.
+  Point2 apply_to_vector(Point2 d) const {
     const float c = std::cos(rotation), s = std::sin(rotation);
-    const float u = uv.x * scale.x, v = uv.y * scale.y;
-    return {c * u + s * v + offset.x, -s * u + c * v + offset.y};
+    const float u = d.x * scale.x, v = d.y * scale.y;
+    return {c * u + s * v, -s * u + c * v};
   }
 };
 

@@ -44,9 +44,8 @@ void expect_quad(const Model& m) {
   EXPECT_EQ(mat.normal->sampler.wrap_s, WrapMode::Repeat);
   EXPECT_FLOAT_EQ(mat.base_color->transform.offset.x, 0.5f);
   EXPECT_FLOAT_EQ(mat.base_color->transform.scale.x, 2.0f);
-  // A footprint of 0.5 in vertex UVs is sqrt(2 * 1) wider after the transform's scale: 0.5 * sqrt(2) * 2
-  // texels of the 2 x 2 level 0, log2 = 0.5.
-  EXPECT_FLOAT_EQ(mat.base_color->level_for_footprint(0.5f), 0.5f);
+  // A footprint's axes scale with the UVs (and are not offset).
+  EXPECT_FLOAT_EQ(mat.base_color->transform.apply_to_vector({0.5f, 0}).x, 1.0f);
   // 2 x 2 texture: red, green / blue, white; sRGB 255 decodes to 1.
   const Texture& t = *mat.base_color->texture;
   EXPECT_FLOAT_EQ(t.texel(0, 0, 0).r, 1.0f);
