@@ -35,6 +35,7 @@ using namespace std::chrono_literals;
 const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 32 triangles
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
 const std::string kPng = test::checker_png(4);
+const std::string kPlainObj = test::grid_obj(4);  // without materials: a model file alone
 const std::string kGlb = [] {
   const auto bytes = test::read_bytes(test::model_path("quad.glb"));
   return std::string(bytes.begin(), bytes.end());
@@ -128,13 +129,14 @@ TEST(AssetApi, AZippedModelIsStoredListedDescribedAndDeleted) {
 
 TEST(AssetApi, TarAndGzipTarWithTheModelAtTheTopLevel) {
   AssetServer s;
-  const std::vector<ArchiveMember> members = {file_member("./grid.obj", kObj), file_member("grid.mtl", kMtl)};
+  const std::vector<ArchiveMember> members = {file_member("./grid.obj", kObj), file_member("grid.mtl", kMtl),
+                                              file_member("textures/albedo.png", kPng)};
   for (const auto& [name, format] :
        {std::pair{"plain_tar", ArchiveFormat::Tar}, {"gzip_tar", ArchiveFormat::TarGz}}) {
     const Reply r = s.upload(name, test::make_archive(format, members));
     ASSERT_EQ(r.status, 201) << name << ": " << r.body;
     EXPECT_EQ(r.body_json()["model"], "grid.obj");
-    EXPECT_EQ(r.body_json()["files"], 2);
+    EXPECT_EQ(r.body_json()["files"], 3);
     EXPECT_EQ(read_text(s.assets_dir() / name / "grid.obj"), kObj);
   }
   EXPECT_EQ(s.get("/api/v1/assets").body_json()["assets"].size(), 2u);
@@ -232,7 +234,7 @@ std::string zip(const std::vector<ArchiveMember>& members) {
 
 // Each archive also holds a good model, so only the member under test is wrong.
 std::vector<Refusal> refusals() {
-  const ArchiveMember model = file_member("model.obj", kObj);
+  const ArchiveMember model = file_member("model.obj", kPlainObj);
   const auto with_model = [&](ArchiveMember m) { return std::vector<ArchiveMember>{model, std::move(m)}; };
   ArchiveMember bomb = file_member("zeros.bin", "");
   bomb.zero_bytes = 4 << 20;
@@ -291,7 +293,7 @@ std::vector<Refusal> refusals() {
 
 TEST(AssetApi, RefusedUploadsAnswerTheirStatusAndCodeAndLeaveNoFiles) {
   AssetServer s({"--max-asset-mb", "1", "--max-asset-files", "8"});
-  ASSERT_EQ(s.upload("taken", zip({file_member("model.obj", kObj)})).status, 201);
+  ASSERT_EQ(s.upload("taken", zip({file_member("model.obj", kPlainObj)})).status, 201);
   for (const Refusal& refusal : refusals()) {
     const Reply r = s.upload(refusal.name, refusal.body);
     EXPECT_EQ(r.status, refusal.status) << refusal.label << ": " << r.body;
