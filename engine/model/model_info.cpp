@@ -2,19 +2,24 @@
 
 #include <algorithm>
 
+#include "engine/model/model_frame.hpp"
+
 namespace lp {
 namespace {
 
-ModelBounds bounds_of(const std::vector<Vec3>& positions) {
+// In the world frame: an OBJ's positions as a scene places it by default (model_frame.hpp).
+ModelBounds bounds_of(const Model& model) {
   ModelBounds b;
-  if (positions.empty()) return b;
-  b.min = b.max = positions.front();
-  for (const Vec3& p : positions) {
+  if (model.positions.empty()) return b;
+  const Mat4 frame = model.up_axis_unstated ? up_axis_to_world(kDefaultUpAxis) : Mat4{};
+  b.min = b.max = frame.point(model.positions.front());
+  for (const Vec3& position : model.positions) {
+    const Vec3 p = frame.point(position);
     b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
     b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
   }
   b.centre = (b.min + b.max) * 0.5f;
-  for (const Vec3& p : positions) b.radius = std::max(b.radius, length(p - b.centre));
+  for (const Vec3& p : model.positions) b.radius = std::max(b.radius, length(frame.point(p) - b.centre));
   return b;
 }
 
@@ -61,7 +66,7 @@ std::vector<TextureInfo> textures_of(const std::vector<ModelMaterial>& materials
 
 ModelInfo describe_model(const Model& model) {
   ModelInfo info;
-  info.bounds = bounds_of(model.positions);
+  info.bounds = bounds_of(model);
   info.triangles = int64_t(model.triangle_count());
   info.vertices = int64_t(model.vertex_count());
   info.meshes = model.source.meshes;

@@ -12,8 +12,9 @@
 
 namespace lp {
 
-// The axis-aligned box of the model's vertices and the sphere about the box's centre that holds them
-// all (`radius` is the largest distance from `centre` to a vertex).
+// The axis-aligned box of the model's vertices in the world frame (model_frame.hpp; an OBJ's as a scene
+// places it by default, y-up) and the sphere about the box's centre that holds them all (`radius` is
+// the largest distance from `centre` to a vertex).
 struct ModelBounds {
   Vec3 min, max, centre;
   float radius = 0;

@@ -108,8 +108,10 @@ TEST(CliInfo, AnObjModelHasItsObjectsAndMaterials) {
   const json j = info(test::model_path("obj/quad.obj").string());
   EXPECT_EQ(j["format"], "obj");
   EXPECT_EQ(j["triangles"], 2);
+  // The unit square of the file's z = 0 plane, read y-up as a scene places it by default: world y = -z, z =
+  // y.
   EXPECT_EQ(j["bounds"]["min"], json::array({0.0, 0.0, 0.0}));
-  EXPECT_EQ(j["bounds"]["max"], json::array({1.0, 1.0, 0.0}));
+  EXPECT_EQ(j["bounds"]["max"], json::array({1.0, 0.0, 1.0}));
   EXPECT_EQ(j["materials"][0]["name"], "textured");
   EXPECT_EQ(j["materials"][0]["features"], json::array({"base_color_texture", "normal_texture"}));
 }

@@ -82,8 +82,13 @@ TEST(ModelInfo, MaterialFeaturesAndEachTextureOnceWithItsColourSpace) {
   EXPECT_EQ(info.textures[1].color_space, ColorSpace::Linear);
 }
 
+// glTF x in [1, 3], y in [2, 4], z = 3 (model_gltf_test.cpp), in the world (x, -z, y).
 TEST(ModelInfo, TheQuadFromItsGlb) {
   const ModelInfo info = describe_model(load_model(test::model_path("quad.glb"), {}));
+  EXPECT_EQ(info.bounds.min, (Vec3{1, -3, 2}));
+  EXPECT_EQ(info.bounds.max, (Vec3{3, -3, 4}));
+  EXPECT_EQ(info.bounds.centre, (Vec3{2, -3, 3}));
+  EXPECT_FLOAT_EQ(info.bounds.radius, std::sqrt(2.0f));
   EXPECT_EQ(info.triangles, 2);
   EXPECT_EQ(info.vertices, 4);
   EXPECT_EQ(info.meshes, 1);
@@ -151,11 +156,14 @@ TEST(ModelInfo, OnlyTheSupportedExtensionsMayBeRequired) {
   }
 }
 
+// An OBJ states no up axis: its bounds are those of a scene's default, y-up, (x, y, z) -> (x, -z, y).
 TEST(ModelInfo, AnObjCountsItsObjectsAndHasNoGltfFacts) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\no a\nf 1 2 3\no b\nf 1 2 4\n";
   const ModelInfo info = describe_model(load_obj_memory(obj, "", "two.obj", {}));
   EXPECT_EQ(info.meshes, 2);
   EXPECT_EQ(info.triangles, 2);
+  EXPECT_EQ(info.bounds.min, (Vec3{0, -1, 0}));
+  EXPECT_EQ(info.bounds.max, (Vec3{1, 0, 1}));
   ASSERT_EQ(info.materials.size(), 1u);  // the default
   EXPECT_TRUE(info.materials[0].features.empty());
   EXPECT_TRUE(info.extensions_used.empty());
