@@ -1,5 +1,7 @@
 // `lightprobe info MAP`, the real tool on the committed maps: its figures are the engine's, its document the
 // server's metadata of the same map, and a bad map fails with the API's code and exit status 2.
+// `lightprobe info MODEL`: the description an asset's record gives of the same model, in the world frame,
+// and invalid_model for a model that does not load.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
