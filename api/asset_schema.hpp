@@ -15,6 +15,9 @@ struct AssetInfo {
   int64_t bytes = 0;  // all its files together
   int64_t files = 0;
   std::chrono::system_clock::time_point created;
+  // The model's description (model_info_schema.hpp), computed when the asset was stored; null for an
+  // asset stored by a server that did not describe its models.
+  Json description;
 };
 
 // A scene object's mesh path "assets/NAME" names the model file of asset NAME, and "assets/NAME/FILE"
@@ -24,6 +27,7 @@ inline constexpr std::string_view kAssetPathPrefix = "assets/";
 // "glb", "gltf" or "obj": the model file's extension, lowercase.
 std::string asset_format(const AssetInfo& info);
 
+// The asset's fields, then its model's description.
 Json asset_metadata(const AssetInfo& info);
 
 }  // namespace lp::api

@@ -21,6 +21,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{InvalidJson, 400, "invalid_json", {}},
     ErrorCodeEntry{JsonTooDeep, 400, "json_too_deep", {}},
     ErrorCodeEntry{InvalidPath, 400, "invalid_path", {}},
+    ErrorCodeEntry{InvalidModel, 422, "invalid_model", {}},
     ErrorCodeEntry{EmptyBody, 400, "empty_body", {}},
     ErrorCodeEntry{MissingHost, 400, "missing_host", {}},
     ErrorCodeEntry{HostNotAllowed, 403, "host_not_allowed", {}},

@@ -26,6 +26,7 @@ enum class ErrorCode {
   InvalidJson,
   JsonTooDeep,
   InvalidPath,
+  InvalidModel,  // an uploaded model that does not load as a render would load it
   EmptyBody,
   MissingHost,
   HostNotAllowed,

@@ -8,8 +8,8 @@
 
 #include "engine/bsdf/microfacet.hpp"
 #include "engine/bsdf/microfacet_albedo.hpp"
+#include "engine/core/frame.hpp"
 #include "engine/core/point2.hpp"
-#include "engine/render/frame.hpp"
 
 namespace lp::render {
 

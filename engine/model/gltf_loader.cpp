@@ -8,20 +8,16 @@
 #include "engine/core/error.hpp"
 #include "engine/model/gltf_accessor.hpp"
 #include "engine/model/gltf_cameras.hpp"
+#include "engine/model/gltf_extensions.hpp"
 #include "engine/model/gltf_materials.hpp"
 #include "engine/model/gltf_scene.hpp"
 #include "engine/model/gltf_schema.hpp"
+#include "engine/model/gltf_source.hpp"
 #include "engine/model/mesh_part.hpp"
 #include "engine/model/tinygltf.hpp"
 
 namespace lp::gltf {
 namespace {
-
-// Extensions a file may require that we read.
-constexpr const char* kSupportedRequired[] = {"KHR_texture_transform",  "KHR_materials_ior",
-                                              "KHR_materials_specular", "KHR_materials_transmission",
-                                              "KHR_materials_volume",   "KHR_materials_clearcoat",
-                                              "KHR_materials_sheen"};
 
 // Keeps a data-URI image's decoded bytes (as_is) for engine/texture. Images in buffer views are read
 // later through buffer_view_bytes, which checks the view against its buffer; tinygltf does not.
@@ -70,8 +66,7 @@ tinygltf::Model parse(std::span<const uint8_t> bytes, const std::string& name, M
                 "glTF " + name + ": " + (err.empty() ? "cannot parse" : err.substr(0, 512)));
   }
   for (const std::string& e : model.extensionsRequired)
-    if (std::find(std::begin(kSupportedRequired), std::end(kSupportedRequired), e) ==
-        std::end(kSupportedRequired))
+    if (!is_supported_extension(e))
       throw Error(ErrorKind::Unsupported,
                   "glTF " + name + " requires the extension " + e.substr(0, 64) + ", which is not supported");
   return model;
@@ -199,6 +194,7 @@ Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& 
   }
   if (fallback_used) out.materials.push_back(default_material());
   out.cameras = read_cameras(model, nodes.cameras);
+  out.source = describe_source(model, instances);
   return out;
 }
 

@@ -120,6 +120,23 @@ struct ModelCamera {
   float yfov_deg = 0;     // the vertical field of view of a perspective camera
 };
 
+// What the model's file says beyond the triangles it makes, for its description (model_info.hpp).
+struct ModelSource {
+  struct Material {
+    std::vector<std::string> features;    // read from the file alone: alpha_mask, alpha_blend, double_sided
+    std::vector<std::string> extensions;  // the glTF extensions the material carries
+  };
+  struct Camera {
+    std::string name;
+    std::string type;  // "perspective" or "orthographic"
+  };
+  int64_t meshes = 0;               // glTF meshes the scene places; OBJ objects and groups
+  std::vector<Material> materials;  // per glTF material, in the order of Model::materials
+  std::vector<Camera> cameras;      // glTF cameras, by index
+  std::vector<std::string> extensions_used;
+  std::vector<std::string> warnings;  // what the file holds that is ignored, each saying where
+};
+
 struct Model {
   std::vector<Vec3> positions;  // world space
   std::vector<Vec3> normals;    // per vertex, unit
@@ -135,6 +152,7 @@ struct Model {
   // The files it was read from, the model file first (none for a model from memory): a copy kept in
   // memory is stale once one of them has changed.
   std::vector<FileStamp> files;
+  ModelSource source;
 
   size_t vertex_count() const { return positions.size(); }
   size_t triangle_count() const { return indices.size() / 3; }

@@ -24,6 +24,14 @@ inline Mat4 y_up_to_world() {
   return r;
 }
 
+// How a model's coordinates entered the world, as its description states it.
+inline const char* frame_statement(bool up_axis_unstated) {
+  return up_axis_unstated
+             ? "world z-up; an OBJ states no up axis: read y-up (a scene's default up_axis), its (x, y, z) "
+               "is (x, -z, y) here"
+             : "world z-up; glTF is y-up: its (x, y, z) is (x, -z, y) here, its front (+z) facing -y";
+}
+
 inline Mat4 up_axis_to_world(UpAxis up) {
   return up == UpAxis::Y ? y_up_to_world() : Mat4{};
 }

@@ -12,12 +12,6 @@
 namespace lp {
 namespace {
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string e = path.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return e;
-}
-
 // The material libraries an OBJ names, read next to it and joined.
 std::string read_material_libraries(const std::string& obj, ModelFiles& files) {
   std::string mtl;
@@ -31,9 +25,15 @@ std::string read_material_libraries(const std::string& obj, ModelFiles& files) {
 
 }  // namespace
 
+std::string model_format(const std::filesystem::path& path) {
+  std::string e = path.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e == ".gltf" || e == ".glb" || e == ".obj" ? e.substr(1) : "";
+}
+
 Model load_model(const std::filesystem::path& path, const ModelLimits& limits, TextureCache* cache) {
-  const std::string extension = lower_extension(path), name = path.filename().string();
-  if (extension != ".gltf" && extension != ".glb" && extension != ".obj")
+  const std::string format = model_format(path), name = path.filename().string();
+  if (format.empty())
     throw Error(ErrorKind::Unsupported, "model " + name + " is not a .gltf, .glb or .obj file");
   ModelFiles files(path.parent_path().empty() ? "." : path.parent_path(), limits.max_file_bytes);
   const std::string model_key = files.cache_key(name);  // stamps the model file before reading it
@@ -42,7 +42,7 @@ Model load_model(const std::filesystem::path& path, const ModelLimits& limits, T
   TextureCache local;
   ModelTextures textures(files, cache ? *cache : local, limits, model_key);
   Model model;
-  if (extension == ".obj") {
+  if (format == "obj") {
     const std::string text(bytes.begin(), bytes.end());
     model = obj::load(text, read_material_libraries(text, files), name, textures, limits);
   } else {

@@ -33,6 +33,10 @@
 
 namespace lp {
 
+// "glb", "gltf" or "obj" for the name of a model file load_model reads (its extension, in any case),
+// else "".
+std::string model_format(const std::filesystem::path& path);
+
 // By extension: .gltf, .glb or .obj. Textures come from `cache` when it holds them (and are kept
 // there while the model lives); without a cache the model's textures are shared only within it.
 Model load_model(const std::filesystem::path& path, const ModelLimits& limits, TextureCache* cache = nullptr);

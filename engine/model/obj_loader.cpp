@@ -172,6 +172,7 @@ Model load(const std::string& obj, const std::string& mtl, const std::string& na
   complete_part(part);
   append_part(model, part, Mat4{});
   model.up_axis_unstated = true;
+  model.source.meshes = int64_t(reader.GetShapes().size());
   return model;
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
-#include "engine/render/frame.hpp"
+#include "engine/core/frame.hpp"
 #include "engine/render/placed_model.hpp"
 
 namespace lp::render {

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "engine/bsdf/bsdf.hpp"
+#include "engine/core/frame.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
 #include "engine/render/env_light.hpp"
-#include "engine/render/frame.hpp"
 #include "engine/render/model_bsdf.hpp"
 #include "engine/render/ray_cone.hpp"
 #include "engine/render/sun_light.hpp"

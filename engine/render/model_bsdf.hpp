@@ -6,7 +6,7 @@
 
 #include "engine/bsdf/bsdf_gltf_pbr.hpp"
 #include "engine/bsdf/bsdf_metallic_roughness.hpp"
-#include "engine/render/frame.hpp"
+#include "engine/core/frame.hpp"
 #include "engine/render/model_shading.hpp"
 
 namespace lp::render {

@@ -16,8 +16,8 @@
 #include <cmath>
 
 #include "engine/core/constants.hpp"
+#include "engine/core/frame.hpp"
 #include "engine/core/vec3.hpp"
-#include "engine/render/frame.hpp"
 
 namespace lp::render {
 

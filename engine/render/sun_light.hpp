@@ -10,10 +10,10 @@
 #include <memory>
 #include <optional>
 
+#include "engine/core/frame.hpp"
 #include "engine/core/point2.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/render/env_light.hpp"
-#include "engine/render/frame.hpp"
 #include "engine/render/scene_desc.hpp"
 #include "engine/sh/sh_irradiance_form.hpp"
 #include "engine/sun/sun.hpp"

@@ -23,7 +23,7 @@ constexpr size_t kMaxPathBytes = 1024;
 constexpr size_t kMaxNameBytes = 255;  // one path component, as Linux file systems allow
 constexpr size_t kReadBlockBytes = 64 * 1024;
 constexpr const char* kNotAnArchive =
-    "the body is neither a .glb model nor a zip or tar (optionally gzip) archive";
+    "the body is neither a .glb or .gltf model nor a zip or tar (optionally gzip) archive";
 
 struct ArchiveCloser {
   void operator()(archive* a) const { archive_read_free(a); }

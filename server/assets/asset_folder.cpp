@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
 #include "api/api_error.hpp"
+#include "engine/model/model_loader.hpp"
 #include "server/storage/atomic_file.hpp"
 
 namespace lp::server {
@@ -18,11 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr size_t kListedFiles = 4;  // model files named in a refusal
-
-std::string lowercase(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
 
 std::string first_component(const std::string& path) {
   return path.substr(0, path.find('/'));
@@ -53,11 +50,11 @@ std::string common_top_folder(const std::vector<UnpackedFile>& files) {
                           "of its archive or inside a single top folder");
 }
 
-AssetFiles write_glb(std::span<const uint8_t> upload, const fs::path& folder) {
-  NewFile file(folder / kGlbFileName);
+AssetFiles write_model(std::span<const uint8_t> upload, const fs::path& folder, std::string_view name) {
+  NewFile file(folder / name);
   file.write(upload);
   file.finish();
-  return {std::string(kGlbFileName), int64_t(upload.size()), 1};
+  return {std::string(name), int64_t(upload.size()), 1};
 }
 
 AssetFiles write_archive(std::span<const uint8_t> upload, const fs::path& folder,
@@ -78,13 +75,17 @@ void sync_folders(const fs::path& folder) {
 }  // namespace
 
 bool is_model_file_name(const std::string& path) {
-  const std::string ext = lowercase(fs::path(path).extension().string());
-  return ext == ".glb" || ext == ".gltf" || ext == ".obj";
+  return !model_format(path).empty();
 }
 
 bool is_glb(std::span<const uint8_t> bytes) {
   constexpr std::array<uint8_t, 4> kMagic = {'g', 'l', 'T', 'F'};
   return bytes.size() >= kMagic.size() && std::equal(kMagic.begin(), kMagic.end(), bytes.begin());
+}
+
+bool is_gltf_json(std::span<const uint8_t> bytes) {
+  const auto first = std::find_if(bytes.begin(), bytes.end(), [](uint8_t c) { return !std::isspace(c); });
+  return first != bytes.end() && *first == '{';
 }
 
 std::string find_model_file(const std::vector<UnpackedFile>& files) {
@@ -108,7 +109,12 @@ StagedAsset::StagedAsset(std::span<const uint8_t> upload, fs::path target, const
   if (!fs::create_directory(staging_))
     throw std::runtime_error("cannot create the folder " + staging_.string() + ": it exists");
   try {
-    files_ = is_glb(upload) ? write_glb(upload, staging_) : write_archive(upload, staging_, limits);
+    if (is_glb(upload))
+      files_ = write_model(upload, staging_, kGlbFileName);
+    else if (is_gltf_json(upload))
+      files_ = write_model(upload, staging_, kGltfFileName);
+    else
+      files_ = write_archive(upload, staging_, limits);
     sync_folders(staging_);
   } catch (...) {
     std::error_code ignored;

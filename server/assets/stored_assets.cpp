@@ -4,6 +4,9 @@
 #include <spdlog/spdlog.h>
 
 #include "api/api_error.hpp"
+#include "api/model_info_schema.hpp"
+#include "api/render_request.hpp"
+#include "engine/model/model_info.hpp"
 #include "server/assets/asset_folder.hpp"
 #include "server/storage/data_dir.hpp"
 #include "server/storage/resource_name.hpp"
@@ -32,7 +35,8 @@ nlohmann::json record_of(const api::AssetInfo& info) {
           {"bytes", info.bytes},
           {"files", info.files},
           {"created_ms",
-           std::chrono::duration_cast<std::chrono::milliseconds>(info.created.time_since_epoch()).count()}};
+           std::chrono::duration_cast<std::chrono::milliseconds>(info.created.time_since_epoch()).count()},
+          {"description", info.description}};
 }
 
 void check_upload_size(const App& app, size_t bytes) {
@@ -49,9 +53,12 @@ void check_upload_size(const App& app, size_t bytes) {
 api::AssetInfo restored_info(const StateStore& store, const nlohmann::json& record) {
   if (record.at("version").get<int>() != kRecordVersion)
     throw std::invalid_argument("unknown record version");
-  api::AssetInfo info{record.at("name").get<std::string>(), record.at("model").get<std::string>(),
-                      record.at("bytes").get<int64_t>(), record.at("files").get<int64_t>(),
-                      Clock::time_point(std::chrono::milliseconds(record.at("created_ms").get<int64_t>()))};
+  api::AssetInfo info{record.at("name").get<std::string>(),
+                      record.at("model").get<std::string>(),
+                      record.at("bytes").get<int64_t>(),
+                      record.at("files").get<int64_t>(),
+                      Clock::time_point(std::chrono::milliseconds(record.at("created_ms").get<int64_t>())),
+                      record.value("description", api::Json())};
   if (!valid_resource_name(info.name)) throw std::invalid_argument("not an asset name: '" + info.name + "'");
   if (!is_model_file_name(info.model)) throw std::invalid_argument("not a model file: '" + info.model + "'");
   const fs::path folder = asset_folder(store, info.name);
@@ -70,6 +77,26 @@ void remove_unrecorded_folders(const StateStore& store) {
   }
 }
 
+// Loads the model file as a render loads it, into the model cache where the first render finds it,
+// and describes it. Throws ApiError 422 invalid_model naming what is wrong, 413 too_large past a model
+// limit, and MemoryBudgetError when the model does not fit in memory.
+api::Json describe_stored_model(App& app, const fs::path& file) {
+  std::shared_ptr<const Model> model;
+  try {
+    model = app.models.get(file, api::model_limits(app.options.limits));
+  } catch (const MemoryBudgetError&) {
+    throw;
+  } catch (const Error& e) {
+    throw api::invalid_model(e);
+  }
+  return api::model_info_json(describe_model(*model));
+}
+
+void write_record(StateStore& store, const api::AssetInfo& info) {
+  std::lock_guard lock(store.assets_mutex());
+  store.write_record(record_path(store, info.name), record_of(info));
+}
+
 }  // namespace
 
 fs::path asset_folder(const StateStore& store, const std::string& name) {
@@ -86,16 +113,23 @@ std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& n
   const auto memory =
       app.memory.reserve(int64_t(upload.size()), MemoryUse::Transient, "unpacking the asset '" + name + "'");
   const ArchiveLimits limits = app.options.assets.archive();
-  StagedAsset staged(upload, asset_folder(store, name), limits);
-  const api::AssetInfo info{name, staged.files().model, staged.files().bytes, staged.files().files,
-                            Clock::now()};
-  std::lock_guard lock(store.assets_mutex());
-  staged.commit();
+  const fs::path folder = asset_folder(store, name);
+  StagedAsset staged(upload, folder, limits);
+  api::AssetInfo info{name, staged.files().model, staged.files().bytes, staged.files().files, Clock::now(),
+                      {}};
+  {
+    std::lock_guard lock(store.assets_mutex());
+    staged.commit();
+  }
+  // The model is loaded from its place, as a render names it; until the record is written the folder is
+  // a leftover that a restart removes, and the held name keeps renders and deletes away from it.
   try {
-    store.write_record(record_path(store, name), record_of(info));
+    info.description =
+        describe_stored_model(app, resolve_inside(folder, info.model, "model", "the asset's folder"));
+    write_record(store, info);
   } catch (...) {
     std::error_code ignored;
-    fs::remove_all(asset_folder(store, name), ignored);
+    fs::remove_all(folder, ignored);
     throw;
   }
   spdlog::info("stored asset '{}' ({}, {} files, {} bytes)", name, info.model, info.files, info.bytes);

@@ -15,7 +15,9 @@ namespace lp::server {
 
 // Stores an upload as the asset `name`: the name is held (400, 409, 507), the upload checked against
 // --max-asset-mb (413), unpacked under --max-asset-mb and --max-asset-files (archive_unpacker.hpp),
-// renamed into place, recorded and registered. Throws api::ApiError.
+// renamed into place, its model loaded into the model cache as a render loads it and described (422
+// invalid_model, 413 past a model limit, the folder removed), recorded and registered. Throws
+// api::ApiError, or MemoryBudgetError when the model does not fit in memory.
 std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& name,
                                                   std::span<const uint8_t> upload);
 

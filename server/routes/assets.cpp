@@ -1,5 +1,5 @@
-// Model assets for scenes: list, upload (a .glb, or a zip or tar archive of a model and its textures),
-// metadata, delete.
+// Model assets for scenes: list, upload (a .glb or a self-contained .gltf, or a zip or tar archive of a
+// model and its textures), metadata and the model's description, delete.
 #include "api/api_error.hpp"
 #include "api/asset_schema.hpp"
 #include "server/assets/stored_assets.hpp"

@@ -1,11 +1,13 @@
-// The glTF loader (schema check, tinygltf, accessors, node graph, materials, embedded textures) on any
-// bytes, as .gltf JSON or, when they start with "glTF", as .glb.
+// The glTF loader (schema check, tinygltf, accessors, node graph, materials, embedded textures) and the
+// description of what it loads (bounds, extensions and warnings) on any bytes, as .gltf JSON or, when
+// they start with "glTF", as .glb.
 // fuzz-dictionary: gltf.dict
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
 #include "engine/core/error.hpp"
+#include "engine/model/model_info.hpp"
 #include "engine/model/model_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -14,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   limits.max_texture_pixels = int64_t{1} << 20;
   limits.max_total_texture_pixels = int64_t{1} << 21;
   try {
-    lp::load_gltf_memory(std::span<const uint8_t>(data, size), "fuzz.gltf", limits);
+    lp::describe_model(lp::load_gltf_memory(std::span<const uint8_t>(data, size), "fuzz.gltf", limits));
   } catch (const lp::Error&) {
   }
   return 0;

@@ -35,6 +35,11 @@ using namespace std::chrono_literals;
 const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 32 triangles
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
 const std::string kPng = test::checker_png(4);
+const std::string kPlainObj = test::grid_obj(4);  // without materials: a model file alone
+const std::string kGlb = [] {
+  const auto bytes = test::read_bytes(test::model_path("quad.glb"));
+  return std::string(bytes.begin(), bytes.end());
+}();
 
 // An OBJ model with its material and texture, zipped as a folder is zipped.
 std::vector<ArchiveMember> textured_obj_in(const std::string& top) {
@@ -124,13 +129,14 @@ TEST(AssetApi, AZippedModelIsStoredListedDescribedAndDeleted) {
 
 TEST(AssetApi, TarAndGzipTarWithTheModelAtTheTopLevel) {
   AssetServer s;
-  const std::vector<ArchiveMember> members = {file_member("./grid.obj", kObj), file_member("grid.mtl", kMtl)};
+  const std::vector<ArchiveMember> members = {file_member("./grid.obj", kObj), file_member("grid.mtl", kMtl),
+                                              file_member("textures/albedo.png", kPng)};
   for (const auto& [name, format] :
        {std::pair{"plain_tar", ArchiveFormat::Tar}, {"gzip_tar", ArchiveFormat::TarGz}}) {
     const Reply r = s.upload(name, test::make_archive(format, members));
     ASSERT_EQ(r.status, 201) << name << ": " << r.body;
     EXPECT_EQ(r.body_json()["model"], "grid.obj");
-    EXPECT_EQ(r.body_json()["files"], 2);
+    EXPECT_EQ(r.body_json()["files"], 3);
     EXPECT_EQ(read_text(s.assets_dir() / name / "grid.obj"), kObj);
   }
   EXPECT_EQ(s.get("/api/v1/assets").body_json()["assets"].size(), 2u);
@@ -138,7 +144,7 @@ TEST(AssetApi, TarAndGzipTarWithTheModelAtTheTopLevel) {
 
 TEST(AssetApi, AGlbIsKeptAsUploaded) {
   AssetServer s;
-  const std::string glb = test::glb_bytes(R"({"asset":{"version":"2.0"}})");
+  const std::string& glb = kGlb;
   const Reply r = s.upload("box.v2", glb);
   ASSERT_EQ(r.status, 201) << r.body;
   EXPECT_EQ(r.body_json()["model"], "model.glb");
@@ -152,7 +158,7 @@ TEST(AssetApi, AssetsAreReloadedAtStartAndLeftoversRemoved) {
   AssetServer s;
   const json zipped =
       s.upload("grid", test::make_archive(ArchiveFormat::Zip, textured_obj_in("grid"))).body_json();
-  const json glb = s.upload("box", test::glb_bytes("{}")).body_json();
+  const json glb = s.upload("box", kGlb).body_json();
   s.stop();
   // What a crash can leave: an unpacked folder renamed into place before its record, and a staged one.
   fs::create_directories(s.assets_dir() / "orphan" / "sub");
@@ -168,7 +174,7 @@ TEST(AssetApi, AssetsAreReloadedAtStartAndLeftoversRemoved) {
 // A record that cannot be restored keeps its files for the operator, and its name stays taken.
 TEST(AssetApi, AnAssetThatCannotBeRestoredKeepsItsFilesAndName) {
   AssetServer s;
-  ASSERT_EQ(s.upload("box", test::glb_bytes("{}")).status, 201);
+  ASSERT_EQ(s.upload("box", kGlb).status, 201);
   s.stop();
   json record = json::parse(read_text(s.assets_dir() / "box.json"));
   record["version"] = 99;  // as a later server might write it
@@ -176,7 +182,7 @@ TEST(AssetApi, AnAssetThatCannotBeRestoredKeepsItsFilesAndName) {
   s.restart();
   EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", json::array()}}));
   EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
-  const Reply r = s.upload("box", test::glb_bytes("{}"));
+  const Reply r = s.upload("box", kGlb);
   EXPECT_EQ(r.status, 409) << r.body;
   EXPECT_NE(r.body.find("could not be restored"), std::string::npos) << r.body;
   EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
@@ -228,7 +234,7 @@ std::string zip(const std::vector<ArchiveMember>& members) {
 
 // Each archive also holds a good model, so only the member under test is wrong.
 std::vector<Refusal> refusals() {
-  const ArchiveMember model = file_member("model.obj", kObj);
+  const ArchiveMember model = file_member("model.obj", kPlainObj);
   const auto with_model = [&](ArchiveMember m) { return std::vector<ArchiveMember>{model, std::move(m)}; };
   ArchiveMember bomb = file_member("zeros.bin", "");
   bomb.zero_bytes = 4 << 20;
@@ -267,7 +273,14 @@ std::vector<Refusal> refusals() {
       {"model in nested folders", "n2", zip({file_member("a/b/model.obj", kObj), file_member("c.txt", "")}),
        400, "invalid_argument", "model files lie in nested folders: 'a/b/model.obj'"},
       {"not an archive", "x1", "just some text", 415, "unsupported_media_type",
-       "neither a .glb model nor a zip"},
+       "neither a .glb or .gltf model nor a zip"},
+      {"truncated .glb", "g1", kGlb.substr(0, kGlb.size() / 2), 422, "invalid_model",
+       "glb model.glb: its length is past the end of the file"},
+      {"a .gltf that is no JSON", "g2", "{\"asset\": ", 422, "invalid_model", "glTF model.gltf"},
+      {"a model without triangles", "g3", test::glb_bytes(R"({"asset":{"version":"2.0"}})"), 422,
+       "invalid_model", "glTF model.glb has no triangles in its scene"},
+      {"an archive's broken .obj", "g4", zip({file_member("model.obj", "v 1 2\nf 1 2 3\n")}), 422,
+       "invalid_model", "model.obj"},
       {"truncated tar", "x2", cut.substr(0, cut.size() / 2), 422, "corrupt",
        "cannot be read: Truncated tar archive"},
       {"empty body", "e1", "", 400, "empty_body", "empty"},
@@ -280,7 +293,7 @@ std::vector<Refusal> refusals() {
 
 TEST(AssetApi, RefusedUploadsAnswerTheirStatusAndCodeAndLeaveNoFiles) {
   AssetServer s({"--max-asset-mb", "1", "--max-asset-files", "8"});
-  ASSERT_EQ(s.upload("taken", zip({file_member("model.obj", kObj)})).status, 201);
+  ASSERT_EQ(s.upload("taken", zip({file_member("model.obj", kPlainObj)})).status, 201);
   for (const Refusal& refusal : refusals()) {
     const Reply r = s.upload(refusal.name, refusal.body);
     EXPECT_EQ(r.status, refusal.status) << refusal.label << ": " << r.body;
@@ -310,14 +323,14 @@ TEST(AssetApi, TheNameIsRequired) {
 // --max-assets counts the assets stored: 507 until one is deleted.
 TEST(AssetApi, MaxAssetsCountsTheStoredAssets) {
   AssetServer s({"--max-assets", "1"});
-  ASSERT_EQ(s.upload("first", test::glb_bytes("{}")).status, 201);
-  const Reply refused = s.upload("second", test::glb_bytes("{}"));
+  ASSERT_EQ(s.upload("first", kGlb).status, 201);
+  const Reply refused = s.upload("second", kGlb);
   EXPECT_EQ(refused.status, 507) << refused.body;
   EXPECT_EQ(refused.body_json()["error"]["code"], "insufficient_storage");
   EXPECT_NE(refused.body.find("maximum number of assets (--max-assets 1)"), std::string::npos)
       << refused.body;
   EXPECT_EQ(s.del("/api/v1/assets/first").status, 204);
-  EXPECT_EQ(s.upload("second", test::glb_bytes("{}")).status, 201);
+  EXPECT_EQ(s.upload("second", kGlb).status, 201);
 }
 
 }  // namespace

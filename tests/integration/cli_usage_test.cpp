@@ -58,8 +58,8 @@ TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
       {{"paint"},
        "unknown command 'paint' (expected one of: info, sample, median-cut, fresnel, render, convert, sh, "
        "brdf-lut, sun, bake)"},
-      {{"info"}, "usage: lightprobe info MAP [options] (see --help)"},
-      {{"info", "a.exr", "b.exr"}, "usage: lightprobe info MAP [options] (see --help)"},
+      {{"info"}, "usage: lightprobe info MAP|MODEL [options] (see --help)"},
+      {{"info", "a.exr", "b.exr"}, "usage: lightprobe info MAP|MODEL [options] (see --help)"},
       {{"info", "default", "--colour", "red"}, "unknown option '--colour' (see lightprobe info --help)"},
       {{"info", "default", "-x"}, "unknown option '-x'"},
       {{"sample", "default", "--count"}, "--count needs a value"},

@@ -152,17 +152,23 @@ TEST(AssetMeshPaths, GlbAndGltfAssetsResolveToTheirModelFiles) {
   options.max_memory_mb = 64;
   App app(options);
   app.state = std::make_unique<StateStore>(state.path());
-  const std::string glb = test::glb_bytes("{}");
+  const auto file = [](const std::string& name) {
+    const auto bytes = test::read_bytes(test::model_path(name));
+    return std::string(bytes.begin(), bytes.end());
+  };
+  const std::string glb = file("quad.glb");
   store_asset(app, "box", bytes_of(glb));
   const std::string gltf = test::make_archive(
-      ArchiveFormat::Zip, {file_member("scene/scene.gltf", "{}"), file_member("scene/scene.bin", "bin"),
-                           file_member("scene/textures/albedo.png", "png")});
+      ArchiveFormat::Zip, {file_member("scene/scene.gltf", file("gltf/quad.gltf")),
+                           file_member("scene/quad.bin", file("gltf/quad.bin")),
+                           file_member("scene/red green.png", file("gltf/red green.png")),
+                           file_member("scene/flat_normal.png", file("gltf/flat_normal.png"))});
   store_asset(app, "scene", bytes_of(gltf));
   const fs::path assets = fs::canonical(state.path() / "assets");
   EXPECT_EQ(resolve_mesh_path(app, "assets/box", "path"), assets / "box" / "model.glb");
   EXPECT_EQ(resolve_mesh_path(app, "assets/scene", "path"), assets / "scene" / "scene" / "scene.gltf");
-  EXPECT_EQ(resolve_mesh_path(app, "assets/scene/scene/scene.bin", "path"),
-            assets / "scene" / "scene" / "scene.bin");
+  EXPECT_EQ(resolve_mesh_path(app, "assets/scene/scene/quad.bin", "path"),
+            assets / "scene" / "scene" / "quad.bin");
   EXPECT_THROW(resolve_mesh_path(app, "assets/scene/../box/model.glb", "path"), api::ApiError);
   EXPECT_THROW(resolve_mesh_path(app, "assets/scene/scene", "path"), api::ApiError);  // a folder
   EXPECT_THROW(resolve_mesh_path(app, "assets/box.glb", "path"), api::ApiError);

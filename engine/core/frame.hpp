@@ -5,7 +5,7 @@
 
 #include "engine/core/vec3.hpp"
 
-namespace lp::render {
+namespace lp {
 
 struct Frame {
   Vec3 s, t, n;
@@ -21,4 +21,4 @@ struct Frame {
   Vec3 to_world(Vec3 v) const { return s * v.x + t * v.y + n * v.z; }
 };
 
-}  // namespace lp::render
+}  // namespace lp
