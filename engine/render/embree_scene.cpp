@@ -6,6 +6,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/frame.hpp"
+#include "engine/render/hit_filter.hpp"
 #include "engine/render/placed_model.hpp"
 
 namespace lp::render {
@@ -46,6 +47,23 @@ float plane_half_size(const SceneDesc& scene) {
     if (const auto* p = std::get_if<PlaneObject>(&o.shape)) extent = std::max(extent, length(p->point));
   }
   return 1e4f * std::max(1.0f, extent);
+}
+
+// TEXCOORD_1 and COLOR_0 at barycentrics (u, v), where the model has them.
+void fill_optional_attributes(const Model& m, const uint32_t* tri, float u, float v, float world_area,
+                              SurfaceHit& hit) {
+  const float w = 1.0f - u - v;
+  if (!m.uvs1.empty()) {
+    const Point2 ta = m.uvs1[tri[0]], tb = m.uvs1[tri[1]], tc = m.uvs1[tri[2]];
+    hit.uv1 = {ta.x * w + tb.x * u + tc.x * v, ta.y * w + tb.y * u + tc.y * v};
+    const float uv_area = std::abs((tb.x - ta.x) * (tc.y - ta.y) - (tc.x - ta.x) * (tb.y - ta.y));
+    hit.uv1_density = world_area > 0 ? std::sqrt(uv_area / world_area) : 0.0f;
+  }
+  if (!m.colors.empty()) {
+    const Rgba &a = m.colors[tri[0]], &b = m.colors[tri[1]], &c = m.colors[tri[2]];
+    hit.color = {a.r * w + b.r * u + c.r * v, a.g * w + b.g * u + c.g * v, a.b * w + b.b * u + c.b * v,
+                 a.a * w + b.a * u + c.a * v};
+  }
 }
 
 RTCRay make_ray(const Ray& r, float t_max) {
@@ -137,17 +155,17 @@ void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& l
   auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                              3 * sizeof(uint32_t), o.model.triangle_count()));
   std::copy(o.model.indices.begin(), o.model.indices.end(), idx);
+  if (o.model_materials) install_hit_filter(g, o.model);
   attach(g, id);
 }
 
 std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context(false);
   RTCRayHit rh{};
   rh.ray = make_ray(r, std::numeric_limits<float>::infinity());
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rh);
+  rtcIntersect1(scene_, &context.embree, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   return surface_hit(r, {rh.ray.tfar,
                          rh.hit.geomID,
@@ -179,10 +197,9 @@ void EmbreeScene::intersect_packet(std::span<const Ray> rays,
     rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  rtcIntersect8(valid, scene_, &context, &rh);
+  RayContext context(true);
+  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect8(valid, scene_, &context.embree, &rh);
   for (int i = 0; i < n; ++i) {
     if (rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
       hits[size_t(i)].reset();
@@ -250,13 +267,13 @@ void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& 
   hit.tangent.direction =
       dot(t_perp, t_perp) > 1e-12f ? normalize(t_perp) : Frame::from_normal(hit.shading_normal).s;
   hit.tangent.w = t0.w < 0 ? -1.0f : 1.0f;
+  fill_optional_attributes(m, tri, w1, w2, world_area, hit);
 }
 
 bool EmbreeScene::occluded(const Ray& r, float t_max) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context(false);
   RTCRay ray = make_ray(r, t_max);
-  rtcOccluded1(scene_, &context, &ray);
+  rtcOccluded1(scene_, &context.embree, &ray);
   return ray.tfar < 0;
 }
 

@@ -17,6 +17,7 @@ float texture_level(const TextureBinding& binding, const TextureLookup& lookup, 
 }
 
 Rgba lookup_texture(const TextureBinding& binding, const SurfaceHit& hit, const TextureLookup& lookup) {
+  if (binding.tex_coord == 1) return binding.sample(hit.uv1, texture_level(binding, lookup, hit.uv1_density));
   return binding.sample(hit.uv, texture_level(binding, lookup, hit.uv_density));
 }
 
@@ -49,6 +50,7 @@ ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const 
     const Rgb t = lookup_texture(*m.base_color, hit, lookup).rgb();
     s.base_color = {s.base_color.x * t.x, s.base_color.y * t.y, s.base_color.z * t.z};
   }
+  s.base_color = {s.base_color.x * hit.color.r, s.base_color.y * hit.color.g, s.base_color.z * hit.color.b};
   s.metallic = m.metallic_factor;
   s.roughness = m.roughness_factor;
   if (m.metallic_roughness) {
@@ -61,6 +63,7 @@ ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const 
     const Rgb t = lookup_texture(*m.emissive, hit, lookup).rgb();
     s.emission = {s.emission.x * t.x, s.emission.y * t.y, s.emission.z * t.z};
   }
+  s.emission = s.emission * m.emissive_strength;
   s.shading_normal = m.normal && lookup.normal_maps ? mapped_normal(*m.normal, m.normal_scale, hit, lookup)
                                                     : hit.shading_normal;
   return s;
