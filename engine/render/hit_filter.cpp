@@ -59,8 +59,11 @@ float coverage_alpha(const Model& model, uint32_t triangle, float u, float v) {
   const uint32_t* tri = &model.indices[size_t(triangle) * 3];
   float alpha = m.base_color_factor.a;
   if (m.base_color) {
-    const auto& uvs = m.base_color->tex_coord == 1 && !model.uvs1.empty() ? model.uvs1 : model.uvs;
-    alpha *= m.base_color->sample(at_barycentric(uvs, tri, u, v), 0.0f).a;
+    // As the shading reads it (SurfaceHit::uv1): (0, 0) where the model has no second set.
+    const bool second = m.base_color->tex_coord == 1;
+    const Point2 uv = second ? (model.uvs1.empty() ? Point2{0, 0} : at_barycentric(model.uvs1, tri, u, v))
+                             : at_barycentric(model.uvs, tri, u, v);
+    alpha *= m.base_color->sample(uv, 0.0f).a;
   }
   if (!model.colors.empty()) {
     const float w = 1.0f - u - v;
