@@ -95,6 +95,8 @@ void add_enum_parameters(std::vector<Doc>& d) {
                        std::optional(render::LightingMode::EnvMap)));
   d.push_back(
       enum_doc(schema("RenderScene", {"properties", "preset"}), std::optional<render::ScenePreset>()));
+  d.push_back(enum_doc(schema("RenderObject", {"oneOf", "type=mesh", "properties", "up_axis"}),
+                       std::optional(kDefaultUpAxis)));
 }
 
 void add_request_ranges(std::vector<Doc>& d) {

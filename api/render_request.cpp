@@ -140,6 +140,7 @@ Material parse_material(const Json* m, const std::string& prefix) {
 MeshObject parse_mesh(const Json& o, const std::string& prefix) {
   MeshObject mesh;
   mesh.path = json_string(o, "path", std::nullopt, prefix);  // resolved in the data directory by the server
+  if (member(o, "up_axis")) mesh.up_axis = json_enum(o, "up_axis", kDefaultUpAxis, prefix);
   if (const Json* t = object_member(o, "transform", prefix)) {
     const std::string tp = field_name(prefix, "transform");
     reject_unknown_fields(*t, {"translate", "scale", "rotate_deg"}, tp);
@@ -168,7 +169,7 @@ SceneObject parse_object(const Json& o, const std::string& prefix) {
     p.normal = required_vec3(o, "normal", prefix);
     object.shape = p;
   } else {
-    reject_unknown_fields(o, {"type", "path", "transform", "material"}, prefix);
+    reject_unknown_fields(o, {"type", "path", "up_axis", "transform", "material"}, prefix);
     MeshObject mesh = parse_mesh(o, prefix);
     mesh.model_materials = !member(o, "material");  // a material given overrides the model's own
     object.shape = std::move(mesh);

@@ -86,8 +86,10 @@ def add_object(spec, folder, name):
         normal = Vector(spec.get("normal", (0, 0, 1))).normalized()
         bpy.context.active_object.rotation_euler = normal.to_track_quat("Z", "Y").to_euler()
     elif kind == "mesh":
-        # The file's own axes, as lightprobe reads it; then scale, rotations about x, y, z, translation.
-        bpy.ops.wm.obj_import(filepath=os.path.join(folder, spec["path"]), forward_axis="Y", up_axis="Z")
+        # The file's up axis as lightprobe reads it (y: (x, y, z) -> (x, -z, y), Blender's default; z: as
+        # it is); then scale, rotations about x, y, z, translation.
+        axes = {"y": ("NEGATIVE_Z", "Y"), "z": ("Y", "Z")}[spec.get("up_axis", "y")]
+        bpy.ops.wm.obj_import(filepath=os.path.join(folder, spec["path"]), forward_axis=axes[0], up_axis=axes[1])
         bpy.context.view_layer.objects.active = bpy.context.selected_objects[0]
         t = spec.get("transform", {})
         o = bpy.context.active_object

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "engine/core/error.hpp"
+#include "engine/model/model_frame.hpp"
 #include "engine/model/tinygltf.hpp"
 
 namespace lp::gltf {
@@ -66,7 +67,7 @@ std::vector<MeshInstance> scene_instances(const tinygltf::Model& model) {
   // Depth-first with an explicit stack: a deep hierarchy cannot exhaust the call stack, and since
   // every node is visited at most once the walk is linear in the nodes.
   std::vector<std::pair<int, Mat4>> stack;
-  for (int root : root_nodes(model)) stack.emplace_back(root, Mat4{});
+  for (int root : root_nodes(model)) stack.emplace_back(root, y_up_to_world());
   while (!stack.empty()) {
     auto [index, parent] = std::move(stack.back());
     stack.pop_back();

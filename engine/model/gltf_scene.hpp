@@ -1,7 +1,7 @@
 #pragma once
 // The meshes a glTF scene places: each node's mesh with the node's world transform (its local
-// transform after its parents'). The scene is the default one, else the first, else all nodes
-// without a parent.
+// transform after its parents', in the world frame of model_frame.hpp). The scene is the default one, else
+// the first, else all nodes without a parent.
 #include <vector>
 
 #include "engine/model/mat4.hpp"

@@ -93,6 +93,9 @@ struct Model {
   std::vector<uint32_t> indices;             // three per triangle, counter-clockwise seen from the front
   std::vector<uint32_t> triangle_materials;  // per triangle, an index into `materials`
   std::vector<ModelMaterial> materials;
+  // False: in the world frame (a glTF, converted as model_frame.hpp says). True: in its file's own
+  // coordinates, whose up axis the file does not state (OBJ); placing it in a scene says which it is.
+  bool up_axis_unstated = false;
   // The files it was read from, the model file first (none for a model from memory): a copy kept in
   // memory is stale once one of them has changed.
   std::vector<FileStamp> files;

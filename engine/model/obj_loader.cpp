@@ -171,6 +171,7 @@ Model load(const std::string& obj, const std::string& mtl, const std::string& na
     }
   complete_part(part);
   append_part(model, part, Mat4{});
+  model.up_axis_unstated = true;
   return model;
 }
 

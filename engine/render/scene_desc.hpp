@@ -12,6 +12,7 @@
 #include "engine/core/limits.hpp"
 #include "engine/core/vec3.hpp"
 #include "engine/model/model.hpp"
+#include "engine/model/model_frame.hpp"
 
 namespace lp::render {
 
@@ -65,6 +66,9 @@ struct MeshObject {
   // True: the model's own materials (with their textures); false: the object's `material` overrides
   // them everywhere (a request that names a material).
   bool model_materials = false;
+  // The up axis of a model file that states none (OBJ), turned to the world's +z before the transform;
+  // kDefaultUpAxis when not given. A glTF is y-up by its specification: giving z for one is refused.
+  std::optional<UpAxis> up_axis;
   void validate(const std::string& prefix) const;
 };
 struct SceneObject {

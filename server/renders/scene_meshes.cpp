@@ -6,9 +6,21 @@
 
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
+#include "engine/render/placed_model.hpp"
 #include "server/assets/mesh_paths.hpp"
 
 namespace lp::server {
+namespace {
+
+void check_up_axis(const render::MeshObject& mesh, const std::string& prefix) {
+  try {
+    render::file_to_world(mesh, *mesh.model);
+  } catch (const Error& e) {
+    throw api::invalid_field(prefix + ".up_axis", e.what());
+  }
+}
+
+}  // namespace
 
 int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
   return resolve_meshes(scene, app, [&app](size_t, const std::string& path, const std::string& field) {
@@ -34,6 +46,7 @@ int64_t resolve_meshes(render::SceneDesc& scene, App& app, const MeshLocator& lo
       } catch (const Error& e) {
         throw api::invalid_field(field, e.what());
       }
+      check_up_axis(*mesh, fmt::format("scene.objects[{}]", i));
     }
     triangles += int64_t(mesh->model->triangle_count());
   }

@@ -123,13 +123,14 @@ TEST(ModelRender, AModelFileReplacedOnDiskIsLoadedAgain) {
   EXPECT_EQ(s.render_to_end("grid.obj")["status"], "done");
 }
 
-// The mean colour of an 8 x 8 render of the quad of test::write_textured_quad at `mesh_path`, seen
-// face-on so that it fills the view, under a constant white map.
+// The mean colour of an 8 x 8 render of the quad of test::write_textured_quad at `mesh_path` (an OBJ
+// written z-up, in z = 0), seen face-on so that it fills the view, under a constant white map.
 Rgb quad_colour(const ModelServer& s, const std::string& mesh_path) {
   const Reply up = test::upload_white_map(*s.client(), "white");
   EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;  // 409: uploaded by an earlier call
   json body = mesh_scene(mesh_path);
   body["envmap"] = "white";
+  body["scene"]["objects"][0]["up_axis"] = "z";
   body["width"] = body["height"] = 8;
   body["spp"] = 16;
   body["scene"]["camera"] = {
@@ -169,6 +170,35 @@ TEST(ModelRender, AnEditedTextureIsPickedUpByTheNextRender) {
   EXPECT_GT(green.y, 0.9f);
   EXPECT_LT(green.z, 0.05f);
   EXPECT_NEAR(green.y, red.x, 0.02f);  // the same quad with the channels swapped
+}
+
+// A mesh object's `up_axis` names an OBJ file's up axis; a glTF is y-up by its specification, so z on
+// one is a 400 naming the field, as is a name that is not an axis.
+TEST(ModelRender, UpAxisZIsForObjFilesAndNamesAnAxis) {
+  auto& s = model_server();
+  const fs::path file = s.data_dir() / "up_grid.obj";
+  std::ofstream(file) << test::grid_obj(2);
+  for (const char* axis : {"y", "z"}) {
+    json body = mesh_scene("up_grid.obj");
+    body["scene"]["objects"][0]["up_axis"] = axis;
+    EXPECT_EQ(s.post(body).status, 202) << axis;
+  }
+  const auto refused = [&](const std::string& path, const std::string& axis) {
+    json body = mesh_scene(path);
+    body["scene"]["objects"][0]["up_axis"] = axis;
+    const Reply r = s.post(body);
+    EXPECT_EQ(r.status, 400) << r.body;
+    const json error = r.body_json()["error"];
+    EXPECT_EQ(error["code"], "invalid_field");
+    return error["message"].get<std::string>();
+  };
+  EXPECT_EQ(
+      refused("glTF2/BoxTextured-glTF/BoxTextured.gltf", "z"),
+      "field 'scene.objects[0].up_axis': a glTF model is y-up by its specification; z applies to OBJ files");
+  EXPECT_NE(refused("up_grid.obj", "x").find("'scene.objects[0].up_axis'"), std::string::npos);
+  json gltf_y = mesh_scene("glTF2/BoxTextured-glTF/BoxTextured.gltf");
+  gltf_y["scene"]["objects"][0]["up_axis"] = "y";
+  EXPECT_EQ(s.post(gltf_y).status, 202);
 }
 
 // Each texture's pixels and all of a model's together are limited by flags: a model over either is a

@@ -432,11 +432,11 @@ TEST(RenderApi, BadFieldsAreRejectedWith400NamingTheField) {
 }
 
 json mesh_scene(const std::string& path) {
-  // bunny.obj is y-up and about 10 units tall: turned z-up and scaled to about 1.
+  // bunny.obj is y-up (an OBJ's default up axis) and about 10 units tall: scaled to about 1.
   return {{"camera", {{"position", {0, -3, 0.5}}, {"look_at", {0, 0, 0.5}}, {"up", {0, 0, 1}}}},
           {"objects", json::array({{{"type", "mesh"},
                                     {"path", path},
-                                    {"transform", {{"scale", 0.1}, {"rotate_deg", {90, 0, 0}}}},
+                                    {"transform", {{"scale", 0.1}}},
                                     {"material", {{"type", "diffuse"}, {"albedo", 0.7}}}}})}};
 }
 

@@ -95,9 +95,10 @@ TEST(GltfSamples, BoxTexturedHasTwelveTrianglesWithItsTextureCoordinatesAndSampl
       squares.insert(int(u_min));
     }
     EXPECT_EQ(squares, (std::set<int>{0, 1, 2, 3, 4, 5}));
-    // The root node's matrix turns (x, y, z) into (x, z, -y): (-0.5, -0.5, 0.5) -> (-0.5, 0.5, 0.5).
+    // The root node's matrix turns (x, y, z) into (x, z, -y): (-0.5, -0.5, 0.5) -> (-0.5, 0.5, 0.5),
+    // which enters the world as (x, -z, y): (-0.5, -0.5, 0.5).
     EXPECT_NEAR(m.positions[0].x, -0.5f, 1e-6f);
-    EXPECT_NEAR(m.positions[0].y, 0.5f, 1e-6f);
+    EXPECT_NEAR(m.positions[0].y, -0.5f, 1e-6f);
     EXPECT_NEAR(m.positions[0].z, 0.5f, 1e-6f);
     ASSERT_EQ(m.materials.size(), 1u);
     const ModelMaterial& mat = m.materials[0];

@@ -16,14 +16,15 @@ namespace {
 
 using json = nlohmann::json;
 
-// The quad: (0..1)^2 in z = 0 under a node translated by (1, 2, 3) whose child scales by 2.
+// The quad: (0..1)^2 in z = 0 under a node translated by (1, 2, 3) whose child scales by 2, entering
+// the world as glTF (x, y, z) -> (x, -z, y).
 void expect_quad(const Model& m) {
   ASSERT_EQ(m.triangle_count(), 2u);
   ASSERT_EQ(m.vertex_count(), 4u);
-  EXPECT_EQ(m.positions[2], (Vec3{3, 4, 3}));  // (1, 1, 0) * 2 + (1, 2, 3)
-  EXPECT_EQ(m.normals[0], (Vec3{0, 0, 1}));
+  EXPECT_EQ(m.positions[2], (Vec3{3, -3, 4}));  // glTF (1, 1, 0) * 2 + (1, 2, 3) = (3, 4, 3)
+  EXPECT_EQ(m.normals[0], (Vec3{0, -1, 0}));    // glTF +z, the front, faces -y
   EXPECT_FLOAT_EQ(m.uvs[0].y, 1.0f);  // bottom-left corner: v = 1 (glTF's v runs down the image)
-  // The tangent follows u (+x); the bitangent cross(n, t) * w points up the image (+y).
+  // The tangent follows u (+x); the bitangent cross(n, t) * w points up the image (glTF +y, world +z).
   EXPECT_NEAR(m.tangents[0].direction.x, 1.0f, 1e-6f);
   EXPECT_FLOAT_EQ(m.tangents[0].w, 1.0f);
   ASSERT_EQ(m.materials.size(), 1u);
@@ -188,11 +189,12 @@ TEST(GltfModel, AMirroringNodeReversesWindingAndHandedness) {
   doc["nodes"][1]["scale"] = {-2, 2, 2};
   const std::string text = doc.dump();
   const Model m = load_gltf_memory({reinterpret_cast<const uint8_t*>(text.data()), text.size()}, "q", {});
-  // Triangle 0 was (0, 1, 2); mirrored it is (0, 2, 1), so that it still faces its normal (+z).
+  // Triangle 0 was (0, 1, 2); mirrored it is (0, 2, 1), so that it still faces its normal (glTF +z,
+  // world -y).
   EXPECT_EQ(m.indices[1], 2u);
   const Vec3 a = m.positions[m.indices[0]], b = m.positions[m.indices[1]], c = m.positions[m.indices[2]];
   EXPECT_GT(dot(cross(b - a, c - a), m.normals[0]), 0.0f);
-  EXPECT_EQ(m.normals[0], (Vec3{0, 0, 1}));
+  EXPECT_EQ(m.normals[0], (Vec3{0, -1, 0}));
   EXPECT_NEAR(m.tangents[0].direction.x, -1.0f, 1e-6f);
   EXPECT_FLOAT_EQ(m.tangents[0].w, -1.0f);
 }
@@ -204,9 +206,9 @@ TEST(GltfModel, MissingNormalsGiveFlatShadingAndMissingUvsZero) {
   const std::string text = doc.dump();
   const Model m = load_gltf_memory({reinterpret_cast<const uint8_t*>(text.data()), text.size()}, "q", {});
   EXPECT_EQ(m.vertex_count(), 6u);  // a vertex per corner
-  for (const Vec3& n : m.normals) EXPECT_EQ(n, (Vec3{0, 0, 1}));
+  for (const Vec3& n : m.normals) EXPECT_EQ(n, (Vec3{0, -1, 0}));
   for (const Point2& uv : m.uvs) EXPECT_EQ(uv.x + uv.y, 0.0f);
-  for (const Tangent& t : m.tangents) EXPECT_NEAR(dot(t.direction, Vec3{0, 0, 1}), 0.0f, 1e-6f);
+  for (const Tangent& t : m.tangents) EXPECT_NEAR(dot(t.direction, Vec3{0, -1, 0}), 0.0f, 1e-6f);
 }
 
 TEST(GltfModel, FilesOutsideTheModelFolderAreRefused) {

@@ -168,7 +168,7 @@ TEST(RenderFurnace, DiffuseCubeMeshAndPlane) {
            "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
   }
   SceneDesc scene = *scene_preset("furnace");
-  scene.objects[0].shape = MeshObject{dir / "cube.obj", {0, 0, 0}, 0.5f, {0, 0, 30}, nullptr, false};
+  scene.objects[0].shape = MeshObject{dir / "cube.obj", {0, 0, 0}, 0.5f, {0, 0, 30}, nullptr, false, UpAxis::Y};
   const Image cube =
       test::render(scene, lighting(LightingMode::EnvMap), settings(kSize), constant_map(1.0f), 64);
   EXPECT_NEAR(cube.at(16, 16).x, 0.5f, 0.03f);

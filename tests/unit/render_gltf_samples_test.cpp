@@ -73,10 +73,11 @@ void expect_colour(const View& view, const Image& image, Vec3 p, Rgb expected, c
         << what << " at (" << p.x << ", " << p.y << ", " << p.z << ") channel " << k;
 }
 
-// BoxTextured's face with normal +z in the file, which the root node's matrix (x, y, z) -> (x, z, -y)
-// turns to +y, seen head on from +y with +z up the image (so -x is to the right). Its UVs run from
-// (6, 0) at x = -0.5, z = 0.5 to (5, 1) at x = 0.5, z = -0.5: v = 0.5 - z, and u = 5.5 - x wraps to
-// 0.5 - x under REPEAT (the logo upright) or to x + 0.5 under MIRRORED_REPEAT (the logo mirrored).
+// BoxTextured's face with normal +y in its mesh, which the root node's matrix (x, y, z) -> (x, z, -y)
+// turns to glTF's -z (the back) and the world frame (x, y, z) -> (x, -z, y) to world +y, seen head on
+// from +y with +z up the image (so -x is to the right). Its UVs run from (6, 0) at x = -0.5, z = 0.5 to
+// (5, 1) at x = 0.5, z = -0.5: v = 0.5 - z, and u = 5.5 - x wraps to 0.5 - x under REPEAT (the logo
+// upright) or to x + 0.5 under MIRRORED_REPEAT (the logo mirrored).
 TEST(RenderGltfSamples, BoxTexturedShowsItsLogoThroughItsSamplersWrapModes) {
   const View view{{{0, 4, 0}, {0, 0, 0}, {0, 0, 1}, 20}, 256, 256};
   // CesiumLogoFlat.png (211 x 211): grey corners, blue sky, a white sun centred at texel (137.5, 59.2)
@@ -106,11 +107,14 @@ TEST(RenderGltfSamples, BoxTexturedShowsItsLogoThroughItsSamplersWrapModes) {
   }
 }
 
-// TextureTransformTest: six unit quads in the z = 0 plane facing +z, their centres at (-1.1, 0.55),
+// TextureTransformTest: six unit quads in glTF's z = 0 plane facing its front (+z), which enter the
+// world in the y = 0 plane facing -y, upright as Blender shows them: seen from the default camera's
+// side (-y) with +z up, they read as the sample's screenshot does. Centres (world x, z) at (-1.1, 0.55),
 // (0, 0.55), (1.1, 0.55) (offsets, UVs (0, 0) to (0.5, 0.5), UV.png) and (-1.1, -0.55), (0, -0.55),
-// (1.1, -0.55) (rotation, scale, all three; UVs (0, 0) to (1, 1), Arrow.png), u along +x and v along -y
+// (1.1, -0.55) (rotation, scale, all three; UVs (0, 0) to (1, 1), Arrow.png), u along +x and v along -z
 // from the top-left corner. Both textures are clamped.
-const View kTransformView{{{0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 2 * std::atan(0.112f) * 180 / kPiF}, 640, 448};
+const View kTransformView{{{0, -10, 0}, {0, 0, 0}, {0, 0, 1}, 2 * std::atan(0.112f) * 180 / kPiF}, 640,
+                          448};
 
 const Image& transform_sample() {
   static const Image image = kTransformView.render("glTF2/textureTransform/TextureTransformTest.gltf");
@@ -118,7 +122,7 @@ const Image& transform_sample() {
 }
 
 Vec3 on_quad(Point2 centre, Point2 local) {
-  return {centre.x + local.x, centre.y + local.y, 0};
+  return {centre.x + local.x, 0, centre.y + local.y};
 }
 
 TEST(RenderGltfSamples, TextureTransformTestOffsetsPickTheirQuadrantOfTheUvImage) {

@@ -160,7 +160,7 @@ TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
   const auto bunny = lp::test::mesh_path("bunny.obj");
   SceneDesc scene = *scene_preset("sphere");
   // The bunny is y-up, about 10 units tall: scale it down and stand it up on z.
-  scene.objects[0].shape = MeshObject{bunny, {0, 0, -0.5f}, 0.15f, {90, 0, 0}, nullptr, false};
+  scene.objects[0].shape = MeshObject{bunny, {0, 0, -0.5f}, 0.15f, {0, 0, 0}, nullptr, false, UpAxis::Y};
   const Image image = test::render(scene, l, settings(32), map, 4);
   int covered = 0;
   for (int y = 0; y < 32; ++y)
@@ -175,7 +175,7 @@ TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
   EXPECT_EQ(error_kind([&] { Renderer(scene, l, limited, map); }), ErrorKind::TooLarge);
 
   SceneDesc missing = scene;
-  missing.objects[0].shape = MeshObject{lp::test::mesh_path("no_such.obj"), {}, 1, {}, nullptr, false};
+  missing.objects[0].shape = MeshObject{lp::test::mesh_path("no_such.obj"), {}, 1, {}, nullptr, false, {}};
   EXPECT_EQ(error_kind([&] { Renderer(missing, l, settings(8), map); }), ErrorKind::NotFound);
 
   const auto dir = std::filesystem::temp_directory_path() / "lp_render_scene_test";
@@ -183,7 +183,7 @@ TEST(RenderScene, MeshesLoadWithLimitsAndErrors) {
   const auto write = [&](const char* name, const char* text) {
     std::ofstream(dir / name) << text;
     SceneDesc s = scene;
-    s.objects[0].shape = MeshObject{dir / name, {}, 1, {}, nullptr, false};
+    s.objects[0].shape = MeshObject{dir / name, {}, 1, {}, nullptr, false, {}};
     return s;
   };
   const SceneDesc no_faces = write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
