@@ -144,13 +144,34 @@ std::vector<std::array<float, 4>> read_vec4(const tinygltf::Model& model, int in
   return out;
 }
 
-std::vector<Point2> read_uv(const tinygltf::Model& model, int index, const std::string& what) {
-  const Elements e = elements(model, index, 2,
+namespace {
+
+// Float, or normalised unsigned byte or short elements of `components` components.
+Elements unit_elements(const tinygltf::Model& model, int index, int components, const std::string& what) {
+  const Elements e = elements(model, index, components,
                               {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
                               what);
   if (e.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !e.normalized)
-    corrupt(fmt::format("{} (accessor {})", what, index), "integer texture coordinates must be normalized");
+    corrupt(fmt::format("{} (accessor {})", what, index), "integer components must be normalized");
+  return e;
+}
+
+}  // namespace
+
+std::vector<std::array<float, 4>> read_color(const tinygltf::Model& model, int index,
+                                             const std::string& what) {
+  accessor_count(model, index, what);  // checks that it exists
+  const int components = model.accessors[size_t(index)].type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+  const Elements e = unit_elements(model, index, components, what);
+  std::vector<std::array<float, 4>> out(e.count, {1, 1, 1, 1});
+  for (size_t i = 0; i < e.count; ++i)
+    for (int c = 0; c < components; ++c) out[i][size_t(c)] = component(e, i, c, what, index);
+  return out;
+}
+
+std::vector<Point2> read_uv(const tinygltf::Model& model, int index, const std::string& what) {
+  const Elements e = unit_elements(model, index, 2, what);
   std::vector<Point2> out(e.count);
   for (size_t i = 0; i < e.count; ++i)
     out[i] = {component(e, i, 0, what, index), component(e, i, 1, what, index)};

@@ -25,6 +25,9 @@ std::vector<Vec3> read_vec3(const tinygltf::Model& model, int index, const std::
 std::vector<std::array<float, 4>> read_vec4(const tinygltf::Model& model, int index, const std::string& what);
 // Float, or normalised unsigned byte or short.
 std::vector<Point2> read_uv(const tinygltf::Model& model, int index, const std::string& what);
+// VEC3 (alpha 1) or VEC4 colours: float, or normalised unsigned byte or short.
+std::vector<std::array<float, 4>> read_color(const tinygltf::Model& model, int index,
+                                             const std::string& what);
 // Unsigned byte, short or int scalars.
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& what);
 

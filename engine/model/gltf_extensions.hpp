@@ -8,9 +8,10 @@
 namespace lp::gltf {
 
 inline constexpr std::string_view kSupportedExtensions[] = {
-    "KHR_texture_transform",      "KHR_materials_ior",    "KHR_materials_specular",
-    "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_clearcoat",
-    "KHR_materials_sheen",
+    "KHR_texture_transform",  "KHR_materials_ior",
+    "KHR_materials_specular", "KHR_materials_transmission",
+    "KHR_materials_volume",   "KHR_materials_clearcoat",
+    "KHR_materials_sheen",    "KHR_materials_emissive_strength",
 };
 
 inline bool is_supported_extension(std::string_view name) {

@@ -114,8 +114,16 @@ std::vector<uint32_t> triangle_list(std::vector<uint32_t> in, int mode, const st
   return out;
 }
 
+// True when a texture of some material samples TEXCOORD_1: only then is that set read.
+bool uses_second_set(const std::vector<ModelMaterial>& materials) {
+  for (const ModelMaterial& m : materials)
+    for (const auto* b : m.bindings())
+      if (*b && (*b)->tex_coord == 1) return true;
+  return false;
+}
+
 MeshPart read_primitive(const tinygltf::Model& model, const tinygltf::Primitive& p, uint32_t material,
-                        const std::string& what) {
+                        bool second_set, const std::string& what) {
   MeshPart part;
   part.positions = read_vec3(model, attribute(p, "POSITION"), what + " POSITION");
   const size_t n = part.positions.size();
@@ -136,6 +144,15 @@ MeshPart read_primitive(const tinygltf::Model& model, const tinygltf::Primitive&
   if (const int a = attribute(p, "TEXCOORD_0"); a >= 0) {
     part.uvs = read_uv(model, a, what + " TEXCOORD_0");
     same_count(part.uvs.size(), "TEXCOORD_0");
+  }
+  if (const int a = attribute(p, "TEXCOORD_1"); a >= 0 && second_set) {
+    part.uvs1 = read_uv(model, a, what + " TEXCOORD_1");
+    same_count(part.uvs1.size(), "TEXCOORD_1");
+  }
+  if (const int a = attribute(p, "COLOR_0"); a >= 0) {
+    for (const auto& c : read_color(model, a, what + " COLOR_0"))
+      part.colors.push_back({c[0], c[1], c[2], c[3]});
+    same_count(part.colors.size(), "COLOR_0");
   }
   std::vector<uint32_t> indices;
   if (p.indices >= 0) {
@@ -176,6 +193,7 @@ Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& 
   out.materials = read_materials(model, textures);
   const auto fallback = uint32_t(out.materials.size());  // for primitives without a material
   bool fallback_used = false;
+  const bool second_set = uses_second_set(out.materials);
   out.positions.reserve(size_t(triangles) * 3);
   for (const MeshInstance& instance : instances) {
     const auto& mesh = model.meshes[size_t(instance.mesh)];
@@ -187,7 +205,8 @@ Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& 
         throw Error(ErrorKind::Corrupt,
                     fmt::format("{} refers to material {}, which does not exist", what, p.material));
       fallback_used |= p.material < 0;
-      MeshPart part = read_primitive(model, p, p.material < 0 ? fallback : uint32_t(p.material), what);
+      MeshPart part =
+          read_primitive(model, p, p.material < 0 ? fallback : uint32_t(p.material), second_set, what);
       complete_part(part);
       append_part(out, part, instance.to_world);
     }

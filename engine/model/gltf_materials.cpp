@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "engine/core/error.hpp"
 #include "engine/model/gltf_accessor.hpp"
@@ -72,6 +73,24 @@ TextureTransform transform(const tinygltf::ExtensionMap& extensions, int& tex_co
   return t;
 }
 
+AlphaMode alpha_mode(const std::string& mode, const std::string& what) {
+  if (mode.empty() || mode == "OPAQUE") return AlphaMode::Opaque;
+  if (mode == "MASK") return AlphaMode::Mask;
+  if (mode == "BLEND") return AlphaMode::Blend;
+  corrupt(what + " alphaMode", fmt::format("'{}' is not OPAQUE, MASK or BLEND", mode.substr(0, 32)));
+}
+
+// alphaMode, alphaCutoff, doubleSided and KHR_materials_emissive_strength.
+void read_coverage(const tinygltf::Material& m, ModelMaterial& out, const std::string& what) {
+  out.alpha_mode = alpha_mode(m.alphaMode, what);
+  out.alpha_cutoff = factor(m.alphaCutoff, 0, std::numeric_limits<float>::max(), what + " alphaCutoff");
+  out.double_sided = m.doubleSided;
+  const auto it = m.extensions.find("KHR_materials_emissive_strength");
+  if (it != m.extensions.end() && it->second.Has("emissiveStrength"))
+    out.emissive_strength = factor(number(it->second.Get("emissiveStrength"), what + " emissiveStrength"), 0,
+                                   std::numeric_limits<float>::max(), what + " emissiveStrength");
+}
+
 class MaterialReader {
  public:
   MaterialReader(const tinygltf::Model& model, ModelTextures& textures)
@@ -86,10 +105,11 @@ class MaterialReader {
     int tex_coord = info.texCoord;
     TextureBinding b;
     b.transform = transform(info.extensions, tex_coord, what);
-    if (tex_coord != 0)
-      throw Error(
-          ErrorKind::Unsupported,
-          fmt::format("{} uses texture coordinates {}: only TEXCOORD_0 is supported", what, tex_coord));
+    if (tex_coord != 0 && tex_coord != 1)
+      throw Error(ErrorKind::Unsupported,
+                  fmt::format("{} uses texture coordinates {}: only TEXCOORD_0 and TEXCOORD_1 are supported",
+                              what, tex_coord));
+    b.tex_coord = tex_coord;
     const tinygltf::Texture& t = model_.textures[size_t(info.index)];
     const std::string name = fmt::format("texture {}", info.index);
     if (t.sampler >= 0) {
@@ -130,6 +150,7 @@ class MaterialReader {
         m, what, [this](const tinygltf::TextureInfo& info, ColorSpace space, const std::string& name) {
           return binding(info, space, name);
         });
+    read_coverage(m, out, what);
     return out;
   }
 

@@ -23,10 +23,11 @@ Vec3 face_normal(const MeshPart& p, size_t triangle) {
 
 void make_flat(MeshPart& p) {
   MeshPart flat;
-  const bool has_uvs = !p.uvs.empty();
   for (size_t i = 0; i < p.indices.size(); ++i) {
     flat.positions.push_back(p.positions[p.indices[i]]);
-    if (has_uvs) flat.uvs.push_back(p.uvs[p.indices[i]]);
+    if (!p.uvs.empty()) flat.uvs.push_back(p.uvs[p.indices[i]]);
+    if (!p.colors.empty()) flat.colors.push_back(p.colors[p.indices[i]]);
+    if (!p.uvs1.empty()) flat.uvs1.push_back(p.uvs1[p.indices[i]]);
     flat.indices.push_back(uint32_t(i));
   }
   for (size_t t = 0; t < p.triangle_count(); ++t) {
@@ -64,7 +65,23 @@ void split_mirrored(MeshPart& p) {
     p.positions.push_back(p.positions[source]);
     p.normals.push_back(p.normals[source]);
     p.uvs.push_back(p.uvs[source]);
+    if (!p.colors.empty()) p.colors.push_back(p.colors[source]);
+    if (!p.uvs1.empty()) p.uvs1.push_back(p.uvs1[source]);
   }
+}
+
+// An optional per-vertex attribute of the part appended to the model's, each side padded with
+// `fallback` where the other has it and it does not: the model allocates nothing for an attribute
+// no part has.
+template <class T>
+void append_optional(std::vector<T>& model, size_t model_before, const std::vector<T>& part, size_t count,
+                     T fallback) {
+  if (part.empty() && model.empty()) return;
+  model.resize(model_before, fallback);
+  if (part.empty())
+    model.resize(model_before + count, fallback);
+  else
+    model.insert(model.end(), part.begin(), part.end());
 }
 
 }  // namespace
@@ -100,6 +117,8 @@ void append_part(Model& model, const MeshPart& p, const Mat4& to_world) {
     model.uvs.push_back(p.uvs[v]);
     model.tangents.push_back({t, mirror ? -p.tangents[v].w : p.tangents[v].w});
   }
+  append_optional(model.colors, base, p.colors, p.positions.size(), Rgba{1, 1, 1, 1});
+  append_optional(model.uvs1, base, p.uvs1, p.positions.size(), Point2{0, 0});
   for (size_t t = 0; t < p.triangle_count(); ++t) {
     const uint32_t a = p.indices[t * 3], b = p.indices[t * 3 + 1], c = p.indices[t * 3 + 2];
     model.indices.insert(model.indices.end(), {base + a, base + (mirror ? c : b), base + (mirror ? b : c)});

@@ -14,6 +14,8 @@ struct MeshPart {
   std::vector<Vec3> normals;      // empty: flat shading
   std::vector<Point2> uvs;        // empty: none
   std::vector<Tangent> tangents;  // empty: generated
+  std::vector<Rgba> colors;       // COLOR_0, empty: none
+  std::vector<Point2> uvs1;       // TEXCOORD_1, empty: none
   std::vector<uint32_t> indices;
   std::vector<uint32_t> triangle_materials;  // one per triangle
   size_t triangle_count() const;

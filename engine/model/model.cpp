@@ -7,19 +7,15 @@ namespace lp {
 
 int64_t Model::memory_bytes() const {
   int64_t bytes = int64_t(positions.size() * (sizeof(Vec3) * 2 + sizeof(Point2) + sizeof(Tangent)) +
-                          indices.size() * sizeof(uint32_t) + triangle_materials.size() * sizeof(uint32_t));
+                          indices.size() * sizeof(uint32_t) + triangle_materials.size() * sizeof(uint32_t) +
+                          colors.size() * sizeof(Rgba) + uvs1.size() * sizeof(Point2));
   std::vector<const Texture*> counted;
-  const auto count = [&](const std::optional<TextureBinding>& b) {
-    if (b && std::find(counted.begin(), counted.end(), b->texture.get()) == counted.end()) {
-      counted.push_back(b->texture.get());
-      bytes += b->texture->memory_bytes();
-    }
-  };
-  for (const ModelMaterial& m : materials) {
-    for (const auto* b : {&m.base_color, &m.metallic_roughness, &m.normal, &m.emissive}) count(*b);
-    if (m.lobes)
-      for (const auto* b : m.lobes->textures()) count(*b);
-  }
+  for (const ModelMaterial& m : materials)
+    for (const auto* b : m.bindings())
+      if (*b && std::find(counted.begin(), counted.end(), (*b)->texture.get()) == counted.end()) {
+        counted.push_back((*b)->texture.get());
+        bytes += (*b)->texture->memory_bytes();
+      }
   return bytes;
 }
 

@@ -36,6 +36,7 @@ struct TextureBinding {
   std::shared_ptr<const Texture> texture;
   TextureSampler sampler;
   TextureTransform transform;
+  int tex_coord = 0;  // the texture coordinate set: 0 (Model::uvs) or 1 (Model::uvs1)
 
   Rgba sample(Point2 uv, float level) const { return texture->sample(transform.apply(uv), level, sampler); }
   // Over a footprint in the vertex UVs: the transform scales and turns its axes as it does the UVs.
@@ -87,6 +88,9 @@ struct MaterialLobes {
   }
 };
 
+// How a material covers its surface (glTF alphaMode). Alpha is base colour factor x texture x COLOR_0.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 // glTF 2.0 metallic-roughness. A texture, where present, multiplies its factor.
 struct ModelMaterial {
   std::string name;
@@ -100,6 +104,24 @@ struct ModelMaterial {
   Rgb emissive_factor{0, 0, 0};
   std::optional<TextureBinding> emissive;  // sRGB-decoded
   std::optional<MaterialLobes> lobes;      // when the material uses one of MaterialLobes' extensions
+
+  // Coverage, sidedness and emission strength (glTF alphaMode, alphaCutoff, doubleSided,
+  // KHR_materials_emissive_strength). Opaque ignores alpha; Mask keeps alpha >= alpha_cutoff; Blend
+  // keeps a hit with probability alpha. A single-sided material's back faces are not seen by camera rays.
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;
+  bool double_sided = true;  // glTF's default false is set by its loader; OBJ/MTL states no side
+  float emissive_strength = 1;
+  bool needs_hit_filter() const { return alpha_mode != AlphaMode::Opaque || !double_sided; }
+
+  // Every texture the material uses, its lobes' included.
+  std::vector<const std::optional<TextureBinding>*> bindings() const {
+    std::vector<const std::optional<TextureBinding>*> out{&base_color, &metallic_roughness, &normal,
+                                                          &emissive};
+    if (lobes)
+      for (const auto* b : lobes->textures()) out.push_back(b);
+    return out;
+  }
 };
 
 // Tangent direction (unit, perpendicular to the normal) and handedness: the bitangent is
@@ -142,6 +164,9 @@ struct Model {
   std::vector<Vec3> normals;    // per vertex, unit
   std::vector<Point2> uvs;      // TEXCOORD_0 ((0, 0) where a mesh has none)
   std::vector<Tangent> tangents;
+  // Optional per-vertex attributes, empty unless some part has them (others then get the defaults).
+  std::vector<Rgba> colors;                  // COLOR_0 (white where a part has none)
+  std::vector<Point2> uvs1;                  // TEXCOORD_1 ((0, 0) where a part has none)
   std::vector<uint32_t> indices;             // three per triangle, counter-clockwise seen from the front
   std::vector<uint32_t> triangle_materials;  // per triangle, an index into `materials`
   std::vector<ModelMaterial> materials;

@@ -6,6 +6,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/frame.hpp"
+#include "engine/render/hit_filter.hpp"
 #include "engine/render/placed_model.hpp"
 
 namespace lp::render {
@@ -46,6 +47,34 @@ float plane_half_size(const SceneDesc& scene) {
     if (const auto* p = std::get_if<PlaneObject>(&o.shape)) extent = std::max(extent, length(p->point));
   }
   return 1e4f * std::max(1.0f, extent);
+}
+
+// With n = e1 x e2, the vectors (e2 x n) / |n|^2 and (n x e1) / |n|^2 are the plane's dual basis of
+// e1, e2 (each has dot 1 with its own edge and 0 with the other): the gradient of u is their
+// combination by u's changes d1, d2 along the edges, and so is v's. Zero for a degenerate triangle.
+void uv_gradients(Vec3 e1, Vec3 e2, Vec3 n, Point2 d1, Point2 d2, Vec3& du_dp, Vec3& dv_dp) {
+  const float nn = dot(n, n);
+  if (!(nn > 0)) return;
+  const Vec3 g1 = cross(e2, n) / nn, g2 = cross(n, e1) / nn;
+  du_dp = g1 * d1.x + g2 * d2.x;
+  dv_dp = g1 * d1.y + g2 * d2.y;
+}
+
+// TEXCOORD_1 and COLOR_0 at barycentrics (u, v), where the model has them; the triangle's edges e1, e2
+// and normal n give the second set's gradients.
+void fill_optional_attributes(const Model& m, const uint32_t* tri, float u, float v, Vec3 e1, Vec3 e2, Vec3 n,
+                              SurfaceHit& hit) {
+  const float w = 1.0f - u - v;
+  if (!m.uvs1.empty()) {
+    const Point2 ta = m.uvs1[tri[0]], tb = m.uvs1[tri[1]], tc = m.uvs1[tri[2]];
+    hit.uv1 = {ta.x * w + tb.x * u + tc.x * v, ta.y * w + tb.y * u + tc.y * v};
+    uv_gradients(e1, e2, n, {tb.x - ta.x, tb.y - ta.y}, {tc.x - ta.x, tc.y - ta.y}, hit.du1_dp, hit.dv1_dp);
+  }
+  if (!m.colors.empty()) {
+    const Rgba &a = m.colors[tri[0]], &b = m.colors[tri[1]], &c = m.colors[tri[2]];
+    hit.color = {a.r * w + b.r * u + c.r * v, a.g * w + b.g * u + c.g * v, a.b * w + b.b * u + c.b * v,
+                 a.a * w + b.a * u + c.a * v};
+  }
 }
 
 RTCRay make_ray(const Ray& r, float t_max) {
@@ -137,17 +166,17 @@ void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& l
   auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                              3 * sizeof(uint32_t), o.model.triangle_count()));
   std::copy(o.model.indices.begin(), o.model.indices.end(), idx);
+  if (o.model_materials) install_hit_filter(g, o.model);
   attach(g, id);
 }
 
 std::optional<SurfaceHit> EmbreeScene::intersect(const Ray& r) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context(false);
   RTCRayHit rh{};
   rh.ray = make_ray(r, std::numeric_limits<float>::infinity());
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rh);
+  rtcIntersect1(scene_, &context.embree, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   return surface_hit(r, {rh.ray.tfar,
                          rh.hit.geomID,
@@ -179,10 +208,9 @@ void EmbreeScene::intersect_packet(std::span<const Ray> rays,
     rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  rtcIntersect8(valid, scene_, &context, &rh);
+  RayContext context(true);
+  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect8(valid, scene_, &context.embree, &rh);
   for (int i = 0; i < n; ++i) {
     if (rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
       hits[size_t(i)].reset();
@@ -222,21 +250,6 @@ SurfaceHit EmbreeScene::surface_hit(const Ray& r, const RawHit& raw) const {
   return hit;
 }
 
-namespace {
-
-// With n = e1 x e2, the vectors (e2 x n) / |n|^2 and (n x e1) / |n|^2 are the plane's dual basis of
-// e1, e2 (each has dot 1 with its own edge and 0 with the other): the gradient of u is their
-// combination by u's changes along the edges, and so is v's.
-void set_uv_gradients(Vec3 e1, Vec3 e2, Vec3 n, Point2 d1, Point2 d2, SurfaceHit& hit) {
-  const float nn = dot(n, n);
-  if (!(nn > 0)) return;
-  const Vec3 g1 = cross(e2, n) / nn, g2 = cross(n, e1) / nn;
-  hit.du_dp = g1 * d1.x + g2 * d2.x;
-  hit.dv_dp = g1 * d1.y + g2 * d2.y;
-}
-
-}  // namespace
-
 void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& hit) const {
   const Model& m = o.model;
   const size_t triangle = raw.primitive;
@@ -256,20 +269,20 @@ void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& 
   if (o.model_materials) hit.material = &m.materials[m.triangle_materials[triangle]];
   const Point2 ta = m.uvs[tri[0]], tb = m.uvs[tri[1]], tc = m.uvs[tri[2]];
   hit.uv = {ta.x * w0 + tb.x * w1 + tc.x * w2, ta.y * w0 + tb.y * w1 + tc.y * w2};
-  set_uv_gradients(b - a, c - a, n, {tb.x - ta.x, tb.y - ta.y}, {tc.x - ta.x, tc.y - ta.y}, hit);
+  uv_gradients(b - a, c - a, n, {tb.x - ta.x, tb.y - ta.y}, {tc.x - ta.x, tc.y - ta.y}, hit.du_dp, hit.dv_dp);
   const Tangent &t0 = m.tangents[tri[0]], &t1 = m.tangents[tri[1]], &t2 = m.tangents[tri[2]];
   const Vec3 t = t0.direction * w0 + t1.direction * w1 + t2.direction * w2;
   const Vec3 t_perp = t - hit.shading_normal * dot(t, hit.shading_normal);  // Gram-Schmidt
   hit.tangent.direction =
       dot(t_perp, t_perp) > 1e-12f ? normalize(t_perp) : Frame::from_normal(hit.shading_normal).s;
   hit.tangent.w = t0.w < 0 ? -1.0f : 1.0f;
+  fill_optional_attributes(m, tri, w1, w2, b - a, c - a, n, hit);
 }
 
 bool EmbreeScene::occluded(const Ray& r, float t_max) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context(false);
   RTCRay ray = make_ray(r, t_max);
-  rtcOccluded1(scene_, &context, &ray);
+  rtcOccluded1(scene_, &context.embree, &ray);
   return ray.tfar < 0;
 }
 

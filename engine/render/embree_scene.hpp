@@ -33,6 +33,11 @@ struct SurfaceHit {
   Point2 uv;
   Tangent tangent;
   Vec3 du_dp{0, 0, 0}, dv_dp{0, 0, 0};
+  // The second texture coordinate set (TEXCOORD_1) and its gradients, and the vertex colour (COLOR_0):
+  // (0, 0), zero and white where the model has none.
+  Point2 uv1;
+  Vec3 du1_dp{0, 0, 0}, dv1_dp{0, 0, 0};
+  Rgba color{1, 1, 1, 1};
 };
 
 class EmbreeScene {
@@ -45,7 +50,8 @@ class EmbreeScene {
 
   std::optional<SurfaceHit> intersect(const Ray& ray) const;
   // Up to kPacket rays traced together as one coherent packet (rtcIntersect8), for camera rays through
-  // neighbouring pixels: Embree then walks the hierarchy once for all of them. hits[i] is what
+  // neighbouring pixels: Embree then walks the hierarchy once for all of them. They are camera rays:
+  // they do not see the back faces of single-sided model materials (hit_filter.hpp). hits[i] is what
   // intersect(rays[i]) gives, up to the rounding of Embree's packet kernels (a ray grazing a silhouette
   // may fall on the other side of it); a ray's result does not depend on the other rays of the packet.
   static constexpr int kPacket = 8;

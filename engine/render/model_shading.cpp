@@ -10,8 +10,10 @@ namespace {
 inline constexpr float kMinReflectionHeight = 0.01f;
 
 Rgba lookup_texture(const TextureBinding& binding, const SurfaceHit& hit, const TextureLookup& lookup) {
-  if (!lookup.mipmaps) return binding.sample(hit.uv, 0.0f);
-  return binding.sample(hit.uv, uv_footprint(hit, lookup.footprint), lookup.max_anisotropy);
+  const bool second = binding.tex_coord == 1;
+  const Point2 uv = second ? hit.uv1 : hit.uv;
+  if (!lookup.mipmaps) return binding.sample(uv, 0.0f);
+  return binding.sample(uv, uv_footprint(hit, lookup.footprint, binding.tex_coord), lookup.max_anisotropy);
 }
 
 float snap_to_zero(float c) {
@@ -68,9 +70,9 @@ Vec3 decode_normal_texel(Rgb texel, float scale) {
   return {x * scale, y * scale, z};
 }
 
-UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& f) {
-  return {{dot(hit.du_dp, f.across), dot(hit.dv_dp, f.across)},
-          {dot(hit.du_dp, f.along), dot(hit.dv_dp, f.along)}};
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& f, int tex_coord) {
+  const Vec3 du = tex_coord == 1 ? hit.du1_dp : hit.du_dp, dv = tex_coord == 1 ? hit.dv1_dp : hit.dv_dp;
+  return {{dot(du, f.across), dot(dv, f.across)}, {dot(du, f.along), dot(dv, f.along)}};
 }
 
 ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const TextureLookup& lookup) {
@@ -80,6 +82,7 @@ ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const 
     const Rgb t = lookup_texture(*m.base_color, hit, lookup).rgb();
     s.base_color = {s.base_color.x * t.x, s.base_color.y * t.y, s.base_color.z * t.z};
   }
+  s.base_color = {s.base_color.x * hit.color.r, s.base_color.y * hit.color.g, s.base_color.z * hit.color.b};
   s.metallic = m.metallic_factor;
   s.roughness = m.roughness_factor;
   if (m.metallic_roughness) {
@@ -92,6 +95,7 @@ ModelSurface model_surface(const ModelMaterial& m, const SurfaceHit& hit, const 
     const Rgb t = lookup_texture(*m.emissive, hit, lookup).rgb();
     s.emission = {s.emission.x * t.x, s.emission.y * t.y, s.emission.z * t.z};
   }
+  s.emission = s.emission * m.emissive_strength;
   s.shading_normal = m.normal && lookup.normal_maps ? mapped_normal(*m.normal, m.normal_scale, hit, lookup)
                                                     : hit.shading_normal;
   if (m.lobes) s.lobes = surface_lobes(*m.lobes, hit, lookup);

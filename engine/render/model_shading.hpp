@@ -40,8 +40,9 @@ struct ModelSurface {
   std::optional<SurfaceLobes> lobes;
 };
 
-// A surface footprint in the hit triangle's vertex UVs: each diameter's change of u and v.
-UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& footprint);
+// A surface footprint in the hit triangle's texture coordinate set `tex_coord` (0 or 1): each
+// diameter's change of u and v.
+UvFootprint uv_footprint(const SurfaceHit& hit, const SurfaceFootprint& footprint, int tex_coord = 0);
 
 ModelSurface model_surface(const ModelMaterial& material, const SurfaceHit& hit, const TextureLookup& lookup);
 

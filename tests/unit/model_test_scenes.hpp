@@ -24,6 +24,19 @@ inline std::shared_ptr<const Texture> make_texture(int w, int h, const std::func
   return std::make_shared<const Texture>(w, h, 3, std::move(texels));
 }
 
+// A texture of w x h RGBA texels given by f(x, y).
+inline std::shared_ptr<const Texture> make_rgba_texture(int w, int h,
+                                                        const std::function<Rgba(int, int)>& f) {
+  std::vector<float> texels;
+  texels.reserve(size_t(w) * size_t(h) * 4);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Rgba c = f(x, y);
+      texels.insert(texels.end(), {c.r, c.g, c.b, c.a});
+    }
+  return std::make_shared<const Texture>(w, h, 4, std::move(texels));
+}
+
 inline TextureBinding bind(std::shared_ptr<const Texture> texture) {
   TextureBinding b;
   b.texture = std::move(texture);
