@@ -5,6 +5,7 @@
 // render's status.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -30,7 +31,9 @@ using test::Reply;
 // filtered) on a black metal, so a pixel on it is its texel: red top-left, green top-right, blue
 // bottom-left, white bottom-right as the image is stored, upright when the quad is seen from the front
 // with glTF's +y up. A perspective camera "front" (yfov 0.6) stands 5 in front of it, 1 above.
-void write_labelled_quad(const fs::path& folder) {
+// `material` is merged into the quad's material, and the file is written as `name`.
+void write_labelled_quad(const fs::path& folder, const std::string& name = "label.gltf",
+                         const json& material = json::object()) {
   const float positions[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
   const float normals[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
   const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};
@@ -80,13 +83,24 @@ void write_labelled_quad(const fs::path& folder) {
         {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
         {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
         {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}}};
-  std::ofstream(folder / "label.gltf") << gltf.dump();
+  json file = gltf;
+  file["materials"][0].update(material);
+  if (material.contains("extensions"))
+    for (const auto& [extension, value] : material["extensions"].items())
+      file["extensionsUsed"].push_back(extension);
+  std::ofstream(folder / name) << file.dump();
 }
 
 class ViewServer {
  public:
   ViewServer() {
     write_labelled_quad(data_.path());
+    write_labelled_quad(
+        data_.path(), "masked.gltf",
+        {{"alphaMode", "MASK"},
+         {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 0.4}}, {"metallicFactor", 1}}}});
+    write_labelled_quad(data_.path(), "bright.gltf",
+                        {{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5}}}}}});
     fs::copy(test::assimp_model_path("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"),
              data_.path() / "engine.glb");
     server_ =
@@ -197,6 +211,40 @@ TEST(ModelView, AGltfCameraRendersFromWhereTheFilePutsIt) {
     const Image image = s.image(st);
     expect_rgb(pixel_at(image, camera, {-0.5f, 0, 0.5f}), {1, 0, 0}, "top left");
     expect_rgb(pixel_at(image, camera, {0.5f, 0, -0.5f}), {1, 1, 1}, "bottom right");
+  }
+}
+
+// Material features on the real server, against their analytic answers: a quad masked out (alpha 0.4
+// under the default cutoff 0.5) lets exactly the map through, pixel for pixel the image without it; an
+// emissive strength of 5 gives 5 times the emission.
+TEST(ModelView, AMaskedOutQuadShowsExactlyTheMapAndEmissiveStrengthScales) {
+  const auto& s = view_server();
+  const json camera = {{"position", {0, -5, 0}}, {"look_at", {0, 0, 0}}, {"fov_deg", 30}};
+  json visible = body_of({{{"type", "mesh"}, {"path", "masked.gltf"}}}, camera);
+  visible["lighting"]["visible"] = true;
+  json empty = visible;
+  empty["scene"]["objects"] = json::array();
+  const json masked = s.render(visible), bare = s.render(empty);
+  ASSERT_EQ(masked["status"], "done") << masked.dump();
+  const Image a = s.image(masked), b = s.image(bare);
+  float largest = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      for (int k = 0; k < 3; ++k) largest = std::max(largest, std::abs(a.at(x, y)[k] - b.at(x, y)[k]));
+  EXPECT_EQ(largest, 0.0f);
+
+  // Unlit (map intensity 0), so a pixel is the emission alone.
+  const auto unlit = [&](const std::string& path) {
+    json body = body_of({{{"type", "mesh"}, {"path", path}}}, camera);
+    body["lighting"]["intensity"] = 0;
+    return s.render(body);
+  };
+  const json plain = unlit("label.gltf"), bright = unlit("bright.gltf");
+  const Image one = s.image(plain), five = s.image(bright);
+  for (const Vec3 p :
+       {Vec3{-0.5f, 0, 0.5f}, Vec3{0.5f, 0, 0.5f}, Vec3{-0.5f, 0, -0.5f}, Vec3{0.5f, 0, -0.5f}}) {
+    const Rgb e1 = pixel_at(one, plain["camera"], p), e5 = pixel_at(five, bright["camera"], p);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(e5[k], 5 * e1[k], 1e-5f + 1e-5f * e5[k]) << k;
   }
 }
 
