@@ -90,7 +90,6 @@ struct Renderer::Impl {
   Impl(const SceneDesc& scene, const Lighting& lighting, const RenderSettings& s,
        std::shared_ptr<const EnvMap> envmap)
       : settings(s),
-        camera_desc(scene.camera),
         camera(scene.camera, s.width, s.height),
         bsdfs(make_bsdfs(scene)),
         split(split_sun(std::move(envmap), lighting)),
@@ -198,8 +197,6 @@ struct Renderer::Impl {
   }
 
   RenderSettings settings;
-  Camera camera_desc;
-  std::vector<std::string> warnings;
   PerspectiveCamera camera;
   std::vector<std::unique_ptr<Bsdf>> bsdfs;
   SunSplit split;
@@ -221,19 +218,9 @@ Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const Rende
   settings.validate("settings");
   SceneDesc resolved = scene;
   if (scene.camera.fit || scene.camera.gltf) load_missing_models(resolved, settings.mesh_limits);
-  SceneView view = resolve_view(resolved, float(settings.width) / float(settings.height));
-  resolved.camera = view.camera;
+  resolved.camera = resolve_camera(resolved, float(settings.width) / float(settings.height));
   resolved.camera.validate("scene.camera");
   impl_ = std::make_unique<Impl>(resolved, lighting, settings, std::move(envmap));
-  impl_->warnings = std::move(view.warnings);
-}
-
-const Camera& Renderer::camera() const {
-  return impl_->camera_desc;
-}
-
-const std::vector<std::string>& Renderer::warnings() const {
-  return impl_->warnings;
 }
 
 Renderer::~Renderer() = default;

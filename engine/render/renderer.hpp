@@ -7,8 +7,6 @@
 #include <functional>
 #include <memory>
 #include <optional>
-#include <string>
-#include <vector>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
@@ -63,10 +61,6 @@ class Renderer {
   // Continues an earlier run of the same scene and settings from its mean image over `spp` samples
   // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.
   void resume(const Image& mean, int spp);
-
-  // The camera rendered (a framed or glTF camera resolved) and the view's warnings (scene_view.hpp).
-  const Camera& camera() const;
-  const std::vector<std::string>& warnings() const;
 
   int spp_done() const;  // samples per pixel so far (their mean, rounded down, after adaptive passes)
   Image image() const;   // mean of the finished passes (linear radiance)

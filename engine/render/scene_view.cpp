@@ -154,23 +154,27 @@ Camera fit_camera(const CameraFit& fit, const BoundingSphere& sphere, float fov_
   return c;
 }
 
-SceneView resolve_view(const SceneDesc& scene, float aspect) {
-  SceneView view;
+Camera resolve_camera(const SceneDesc& scene, float aspect) {
   const Camera& asked = scene.camera;
+  Camera camera = asked;
   if (asked.fit) {
     const BoundingSphere sphere = framing_sphere(scene, asked.fit->object);
     if (!(sphere.radius > 0))
       invalid_parameter(kFitField, asked.fit->object
                                        ? fmt::format("object {} has no extent to frame", *asked.fit->object)
                                        : "the scene has no sphere or mesh to frame");
-    view.camera = fit_camera(*asked.fit, sphere, asked.fov_deg, aspect);
+    camera = fit_camera(*asked.fit, sphere, asked.fov_deg, aspect);
   } else if (asked.gltf) {
-    view.camera = gltf_camera(scene, *asked.gltf, asked.fov_deg);
-  } else {
-    view.camera = asked;
+    camera = gltf_camera(scene, *asked.gltf, asked.fov_deg);
   }
-  view.camera.fit.reset();
-  view.camera.gltf.reset();
+  camera.fit.reset();
+  camera.gltf.reset();
+  return camera;
+}
+
+SceneView resolve_view(const SceneDesc& scene, float aspect) {
+  SceneView view;
+  view.camera = resolve_camera(scene, aspect);
   view.warnings = inside_warnings(scene, view.camera.position);
   if (sees_nothing(scene, view.camera, aspect))
     view.warnings.push_back(

@@ -29,9 +29,13 @@ BoundingSphere framing_sphere(const SceneDesc& scene, std::optional<uint32_t> ob
 // `aspect` = width / height.
 Camera fit_camera(const CameraFit& fit, const BoundingSphere& sphere, float fov_deg, float aspect);
 
-// Throws lp::Error(InvalidArgument) naming `scene.camera.fit` when nothing is bounded to frame, and
-// `scene.camera.gltf` for a camera the model does not have or an orthographic one. Every mesh whose
-// model a fit or a glTF camera needs must be loaded.
+// The camera alone, a framed or glTF camera placed. Throws lp::Error(InvalidArgument) naming
+// `scene.camera.fit` when nothing is bounded to frame, and `scene.camera.gltf` for a camera the model
+// does not have or an orthographic one. Every mesh whose model a fit or a glTF camera needs must be
+// loaded.
+Camera resolve_camera(const SceneDesc& scene, float aspect);
+
+// The camera and the view's warnings (which read every mesh's placed vertices); throws as resolve_camera.
 SceneView resolve_view(const SceneDesc& scene, float aspect);
 
 // Models of mesh objects not yet loaded, loaded (what resolve_view needs when the scene names files).

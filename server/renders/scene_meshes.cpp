@@ -29,6 +29,7 @@ void resolve_view(api::RenderRequest& request) {
   api::as_invalid_field([&] {
     request.view = render::resolve_view(request.scene, float(s.width) / float(std::max(1, s.height)));
   });
+  request.scene.camera = request.view->camera;  // the job renders it as resolved, without framing again
 }
 
 int64_t resolve_meshes(render::SceneDesc& scene, App& app) {
