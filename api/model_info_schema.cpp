@@ -7,8 +7,13 @@ Json vec3(Vec3 v) {
   return Json::array({v.x, v.y, v.z});
 }
 
-Json bounds_json(const ModelBounds& b) {
-  return {{"min", vec3(b.min)}, {"max", vec3(b.max)}, {"centre", vec3(b.centre)}, {"radius", b.radius}};
+// An empty model's bounds are all zero.
+Json bounds_json(const Bounds& b, const BoundingSphere& s) {
+  const Vec3 zero{0, 0, 0};
+  return {{"min", vec3(b.empty() ? zero : b.min)},
+          {"max", vec3(b.empty() ? zero : b.max)},
+          {"centre", vec3(s.center)},
+          {"radius", s.radius}};
 }
 
 Json materials_json(const std::vector<MaterialInfo>& materials) {
@@ -39,7 +44,7 @@ Json cameras_json(const std::vector<ModelSource::Camera>& cameras) {
 
 Json model_info_json(const ModelInfo& info) {
   return {{"frame", info.frame},
-          {"bounds", bounds_json(info.bounds)},
+          {"bounds", bounds_json(info.bounds, info.sphere)},
           {"triangles", info.triangles},
           {"vertices", info.vertices},
           {"meshes", info.meshes},

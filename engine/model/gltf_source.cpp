@@ -120,9 +120,6 @@ void warn_ignored_content(const tinygltf::Model& model, const std::vector<MeshIn
 
 ModelSource::Material material_source(const tinygltf::Material& m) {
   ModelSource::Material out;
-  if (m.alphaMode == "MASK") out.features.push_back("alpha_mask");
-  if (m.alphaMode == "BLEND") out.features.push_back("alpha_blend");
-  if (m.doubleSided) out.features.push_back("double_sided");
   for (const auto& [name, value] : m.extensions) out.extensions.push_back(name);
   return out;
 }

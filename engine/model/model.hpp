@@ -145,7 +145,6 @@ struct ModelCamera {
 // What the model's file says beyond the triangles it makes, for its description (model_info.hpp).
 struct ModelSource {
   struct Material {
-    std::vector<std::string> features;    // read from the file alone: alpha_mask, alpha_blend, double_sided
     std::vector<std::string> extensions;  // the glTF extensions the material carries
   };
   struct Camera {

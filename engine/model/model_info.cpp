@@ -8,19 +8,13 @@ namespace lp {
 namespace {
 
 // In the world frame: an OBJ's positions as a scene places it by default (model_frame.hpp).
-ModelBounds bounds_of(const Model& model) {
-  ModelBounds b;
-  if (model.positions.empty()) return b;
+void describe_extent(const Model& model, ModelInfo& info) {
   const Mat4 frame = model.up_axis_unstated ? up_axis_to_world(kDefaultUpAxis) : Mat4{};
-  b.min = b.max = frame.point(model.positions.front());
-  for (const Vec3& position : model.positions) {
-    const Vec3 p = frame.point(position);
-    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
-    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
-  }
-  b.centre = (b.min + b.max) * 0.5f;
-  for (const Vec3& p : model.positions) b.radius = std::max(b.radius, length(frame.point(p) - b.centre));
-  return b;
+  for (const Vec3& p : model.positions) info.bounds.extend(frame.point(p));
+  if (info.bounds.empty()) return;
+  info.sphere.center = info.bounds.center();
+  for (const Vec3& p : model.positions)
+    info.sphere.radius = std::max(info.sphere.radius, length(frame.point(p) - info.sphere.center));
 }
 
 struct Slot {
@@ -41,10 +35,10 @@ MaterialInfo material_info(const ModelMaterial& m, const ModelSource::Material* 
   for (const Slot& s : slots(m))
     if (*s.binding) out.features.push_back(s.feature);
   if (max_component(m.emissive_factor) > 0) out.features.push_back("emissive");
-  if (source) {
-    out.features.insert(out.features.end(), source->features.begin(), source->features.end());
-    out.extensions = source->extensions;
-  }
+  if (m.alpha_mode == AlphaMode::Mask) out.features.push_back("alpha_mask");
+  if (m.alpha_mode == AlphaMode::Blend) out.features.push_back("alpha_blend");
+  if (m.double_sided) out.features.push_back("double_sided");
+  if (source) out.extensions = source->extensions;
   return out;
 }
 
@@ -67,7 +61,7 @@ std::vector<TextureInfo> textures_of(const std::vector<ModelMaterial>& materials
 ModelInfo describe_model(const Model& model) {
   ModelInfo info;
   info.frame = frame_statement(model.up_axis_unstated);
-  info.bounds = bounds_of(model);
+  describe_extent(model, info);
   info.triangles = int64_t(model.triangle_count());
   info.vertices = int64_t(model.vertex_count());
   info.meshes = model.source.meshes;

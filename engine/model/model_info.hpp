@@ -6,25 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/bounds.hpp"
 #include "engine/core/vec3.hpp"
 #include "engine/model/model.hpp"
 #include "engine/texture/texture_decode.hpp"
 
 namespace lp {
 
-// The axis-aligned box of the model's vertices in the world frame (model_frame.hpp; an OBJ's as a scene
-// places it by default, y-up) and the sphere about the box's centre that holds them all (`radius` is
-// the largest distance from `centre` to a vertex).
-struct ModelBounds {
-  Vec3 min, max, centre;
-  float radius = 0;
-};
-
 struct MaterialInfo {
   std::string name;
   // What the material uses, in this order: base_color_texture, metallic_roughness_texture,
-  // normal_texture, emissive_texture, emissive (a non-zero emissive factor), then what only the file
-  // says (ModelSource::Material::features).
+  // normal_texture, emissive_texture, emissive (a non-zero emissive factor), alpha_mask or alpha_blend,
+  // double_sided (as it renders: an OBJ's materials are).
   std::vector<std::string> features;
   std::vector<std::string> extensions;  // the glTF extensions it carries
 };
@@ -38,7 +31,11 @@ struct TextureInfo {
 
 struct ModelInfo {
   std::string frame;  // frame_statement (model_frame.hpp)
-  ModelBounds bounds;
+  // The box of the model's vertices in the world frame (model_frame.hpp; an OBJ's as a scene places
+  // it by default, y-up), empty for a model without vertices, and the sphere about the box's centre
+  // that holds them all.
+  Bounds bounds;
+  BoundingSphere sphere;
   int64_t triangles = 0, vertices = 0, meshes = 0;
   std::vector<MaterialInfo> materials;
   std::vector<TextureInfo> textures;

@@ -115,7 +115,9 @@ TEST(CliInfo, AnObjModelHasItsObjectsAndMaterials) {
   EXPECT_EQ(j["bounds"]["min"], json::array({0.0, 0.0, 0.0}));
   EXPECT_EQ(j["bounds"]["max"], json::array({1.0, 0.0, 1.0}));
   EXPECT_EQ(j["materials"][0]["name"], "textured");
-  EXPECT_EQ(j["materials"][0]["features"], json::array({"base_color_texture", "normal_texture"}));
+  // OBJ/MTL states no side: both sides render
+  EXPECT_EQ(j["materials"][0]["features"],
+            json::array({"base_color_texture", "normal_texture", "double_sided"}));
 }
 
 TEST(CliInfo, ABrokenModelFailsWithInvalidModel) {

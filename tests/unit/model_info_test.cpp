@@ -43,8 +43,8 @@ TEST(ModelInfo, TheSphereIsTheSmallestAboutTheBoxCentreHoldingEveryVertex) {
   const ModelInfo info = describe_model(m);
   EXPECT_EQ(info.bounds.min, (Vec3{0, 0, 0}));
   EXPECT_EQ(info.bounds.max, (Vec3{4, 2, 6}));
-  EXPECT_EQ(info.bounds.centre, (Vec3{2, 1, 3}));
-  EXPECT_FLOAT_EQ(info.bounds.radius, std::sqrt(10.0f));
+  EXPECT_EQ(info.sphere.center, (Vec3{2, 1, 3}));
+  EXPECT_FLOAT_EQ(info.sphere.radius, std::sqrt(10.0f));
   EXPECT_EQ(info.triangles, 2);
   EXPECT_EQ(info.vertices, 4);
 }
@@ -62,8 +62,10 @@ TEST(ModelInfo, MaterialFeaturesAndEachTextureOnceWithItsColourSpace) {
   b.base_color = TextureBinding{albedo, {}, {}};  // shared: listed once
   b.normal = TextureBinding{data, {}, {}};
   b.emissive = TextureBinding{albedo, {}, {}};  // a texture with a zero factor: no emission
+  a.alpha_mode = AlphaMode::Mask;
+  b.double_sided = false;
   m.materials = {a, b};
-  m.source.materials = {{{"alpha_mask", "double_sided"}, {"KHR_materials_ior"}}};  // the file's, for a only
+  m.source.materials = {{{"KHR_materials_ior"}}};  // the file's, for a only
   const ModelInfo info = describe_model(m);
   ASSERT_EQ(info.materials.size(), 2u);
   EXPECT_EQ(info.materials[0].features,
@@ -87,8 +89,8 @@ TEST(ModelInfo, TheQuadFromItsGlb) {
   const ModelInfo info = describe_model(load_model(test::model_path("quad.glb"), {}));
   EXPECT_EQ(info.bounds.min, (Vec3{1, -3, 2}));
   EXPECT_EQ(info.bounds.max, (Vec3{3, -3, 4}));
-  EXPECT_EQ(info.bounds.centre, (Vec3{2, -3, 3}));
-  EXPECT_FLOAT_EQ(info.bounds.radius, std::sqrt(2.0f));
+  EXPECT_EQ(info.sphere.center, (Vec3{2, -3, 3}));
+  EXPECT_FLOAT_EQ(info.sphere.radius, std::sqrt(2.0f));
   EXPECT_EQ(info.triangles, 2);
   EXPECT_EQ(info.vertices, 4);
   EXPECT_EQ(info.meshes, 1);
@@ -165,7 +167,7 @@ TEST(ModelInfo, AnObjCountsItsObjectsAndHasNoGltfFacts) {
   EXPECT_EQ(info.bounds.min, (Vec3{0, -1, 0}));
   EXPECT_EQ(info.bounds.max, (Vec3{1, 0, 1}));
   ASSERT_EQ(info.materials.size(), 1u);  // the default
-  EXPECT_TRUE(info.materials[0].features.empty());
+  EXPECT_EQ(info.materials[0].features, (std::vector<std::string>{"double_sided"}));  // as it renders
   EXPECT_TRUE(info.extensions_used.empty());
   EXPECT_TRUE(info.warnings.empty());
 }
