@@ -29,6 +29,9 @@ import time
 import bpy
 from mathutils import Euler, Vector
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cycles_setup  # noqa: E402
+
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
@@ -103,105 +106,31 @@ def add_object(spec, folder, name):
     obj.data.materials.append(diffuse_material(spec.get("material", {"type": "diffuse"}), name))
 
 
-def add_camera(scene, spec):
-    if list(spec.get("up", (0, 0, 1))) != [0, 0, 1]:
-        sys.exit("cycles_compare.py: only cameras with up = [0, 0, 1] are translated")
-    cam_data = bpy.data.cameras.new("camera")
-    cam_data.sensor_fit = "VERTICAL"
-    cam_data.angle = math.radians(spec.get("fov_deg", 40.0))
-    cam = bpy.data.objects.new("camera", cam_data)
-    scene.collection.objects.link(cam)
-    cam.location = spec["position"]
-    view = Vector(spec["look_at"]) - Vector(spec["position"])
-    cam.rotation_euler = view.to_track_quat("-Z", "Y").to_euler()
-    scene.camera = cam
-
-
 def build_scene(args):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
-    scene.render.engine = "CYCLES"
-    cycles = scene.cycles
-    cycles.device = "CPU"
-    cycles.use_adaptive_sampling = False
-    cycles.use_denoising = False
-    cycles.sample_clamp_direct = 0.0
-    cycles.sample_clamp_indirect = 0.0
-    cycles.blur_glossy = 0.0
-    cycles.caustics_reflective = True
-    cycles.caustics_refractive = True
-    cycles.max_bounces = 8
-    cycles.diffuse_bounces = 8
-    cycles.glossy_bounces = 8
-    cycles.transmission_bounces = 8
-    cycles.transparent_max_bounces = 8
-    cycles.filter_type = "BOX"
-    cycles.filter_width = 1.0
-    cycles.seed = 1
+    cycles_setup.configure_cycles(scene, args.size, args.size, args.threads)
     scene.render.film_transparent = True
-    scene.render.threads_mode = "FIXED"
-    scene.render.threads = args.threads
-    scene.render.resolution_x = scene.render.resolution_y = args.size
-    scene.render.resolution_percentage = 100
-    scene.render.use_persistent_data = False
-    scene.view_settings.view_transform = "Standard"
-    scene.render.image_settings.file_format = "OPEN_EXR"
-    scene.render.image_settings.color_depth = "32"
-    scene.render.image_settings.color_mode = "RGBA"
-
-    world = bpy.data.worlds.new("forest")
-    scene.world = world
-    world.use_nodes = True
-    nodes = world.node_tree.nodes
-    env = nodes.new("ShaderNodeTexEnvironment")
-    env.image = bpy.data.images.load(os.path.abspath(args.map))
-    env.interpolation = "Closest"  # lightprobe looks the map up per pixel (nearest)
-    # Cycles maps a direction of azimuth phi to u = 0.5 - phi / (2 pi); lightprobe to u = phi / (2 pi)
-    # (engine/envmap/latlong.hpp). Mirroring x turns one into the other.
-    coords = nodes.new("ShaderNodeTexCoord")
-    mapping = nodes.new("ShaderNodeMapping")
-    mapping.vector_type = "VECTOR"
-    mapping.inputs["Scale"].default_value = (-1.0, 1.0, 1.0)
-    world.node_tree.links.new(coords.outputs["Generated"], mapping.inputs["Vector"])
-    world.node_tree.links.new(mapping.outputs["Vector"], env.inputs["Vector"])
-    world.node_tree.links.new(env.outputs["Color"], nodes["Background"].inputs["Color"])
-    nodes["Background"].inputs["Strength"].default_value = 1.0
-    world.cycles.sampling_method = "MANUAL"
-    world.cycles.sample_map_resolution = env.image.size[0]
+    cycles_setup.add_world_map(scene, args.map)  # lightprobe looks the map up per pixel (nearest)
 
     request = load_request(args.scene) if args.scene else SPHERE_PRESET
     folder = os.path.dirname(os.path.abspath(args.scene)) if args.scene else ""
     for i, obj in enumerate(request["scene"]["objects"]):
         add_object(obj, folder, f"object{i}")
-    add_camera(scene, request["scene"].get("camera", SPHERE_PRESET["scene"]["camera"]))
+    cycles_setup.add_camera(scene, request["scene"].get("camera", SPHERE_PRESET["scene"]["camera"]))
     return scene
 
 
 def render(scene, spp, seed, path):
-    scene.cycles.samples = spp
-    scene.cycles.seed = seed
-    scene.render.filepath = path
     t0 = time.perf_counter()
-    bpy.ops.render.render(write_still=True)
-    seconds = time.perf_counter() - t0
-    img = bpy.data.images.load(path)
-    pixels = list(img.pixels[:])  # RGBA, rows bottom to top
-    bpy.data.images.remove(img)
-    return pixels, seconds
+    pixels = cycles_setup.render_pixels(scene, spp, seed, path)
+    return pixels, time.perf_counter() - t0
 
 
 def relative_rmse(a, ref):
-    sq = total = 0.0
-    n = 0
-    for i in range(0, len(ref), 4):
-        if ref[i + 3] < 0.999:  # only fully covered pixels
-            continue
-        for k in range(3):
-            d = a[i + k] - ref[i + k]
-            sq += d * d
-            total += ref[i + k]
-            n += 1
-    return math.sqrt(sq / n) / (total / n)
+    """RMSE over the reference's fully covered pixels, relative to their mean."""
+    covered = [ref[p + 3] >= 0.999 for p in range(0, len(ref), 4)]
+    return math.sqrt(cycles_setup.rel_mse(a, ref, covered))
 
 
 def main():
