@@ -3,7 +3,8 @@
 // in $LIGHTPROBE_SCREENSHOT_DIR. Run: LIGHTPROBE_SERVER_BIN=build/bin/lightprobe-server node --test
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useDashboard, renderSphere, waitForImage, screenshot, prefilterChain } from './support.mjs';
+import path from 'node:path';
+import { useDashboard, renderSphere, waitForImage, screenshot, prefilterChain, models } from './support.mjs';
 
 const SCREENS = [
   { name: 'desktop', width: 1280, height: 800 },
@@ -24,15 +25,34 @@ const outside = () => page.evaluate(() => {
     .map(({ e, box }) => `${e.outerHTML.slice(0, 120)} at x ${Math.round(box.left)}..${Math.round(box.right)} of ${width}`);
 });
 
+// A model with warnings, then one whose material lists every extension read (the longest rows of the
+// Models panel), rendered framed at 640 pixels wide.
+async function fillModels() {
+  for (const [file, name] of [['/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf', 'simple_skin'], [path.join(models, 'quad_lobes.gltf'), 'quad_lobes']]) {
+    await page.locator('#model-file').setInputFiles(file);
+    await page.locator('#model-upload-form button[type=submit]').click();
+    await page.locator(`#model-list tr[data-id="${name}"].selected`).waitFor();
+  }
+  const form = page.locator('#model-render-form');
+  await form.locator('[name=width]').fill('640');
+  await form.locator('[name=height]').fill('480');
+  await form.locator('[name=spp]').fill('1');
+  await page.locator('#model-render-submit').click();
+  await page.locator('#model-render-status[data-status=done]').waitFor({ timeout: 45000 });
+  await waitForImage(page, '#model-render-image', 640);
+}
+
 // Fills the page with what makes it wide: the map list with its Delete button, the sun marked on the
-// map, a prefiltered chain's strip of seven levels, a render wider than a phone still running (its
-// Cancel button in the job list), a side-by-side pair, messages beside fields.
+// map, a prefiltered chain's strip of seven levels, the Models panel with a model and its render, a
+// render wider than a phone still running (its Cancel button in the job list), a side-by-side pair,
+// messages beside fields.
 async function fillPage() {
   await page.locator('#map-list tr[data-id=forest] button').waitFor();
   await page.locator('#sun-find').click();
   await page.locator('#sun-marker').waitFor();
   await prefilterChain(page, { levels: 7, base_size: 128, samples: 16 });
   await page.locator('#prefilter-strip figure[data-level="6"] img[src]').waitFor();
+  await fillModels();
   const running = await renderSphere(page, { width: 640, height: 480, spp: 65536, status: 'running' });
   await waitForImage(page, '#render-image', 640);
   const form = page.locator('#render-form');
@@ -62,9 +82,11 @@ test('nothing lies beyond the viewport at 1280 and at 390 pixels wide, the rende
     const scroll = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
     assert.equal(scroll[0], scroll[1], `${screen.name}: the page is ${scroll[0]} px wide in a ${scroll[1]} px viewport`);
     assert.deepEqual(await outside(), [], screen.name);
-    // The render is shown whole: within its frame, scaled down to fit if need be.
-    const [frame, image] = await Promise.all(['.render-frame', '#render-image'].map((s) => page.locator(s).boundingBox()));
-    assert.ok(image.width > 0 && image.x >= frame.x && image.x + image.width <= frame.x + frame.width, `${screen.name}: ${JSON.stringify({ frame, image })}`);
+    // The renders are shown whole: within their frames, scaled down to fit if need be.
+    for (const panel of ['#renders-panel', '#models-panel']) {
+      const [frame, image] = await Promise.all(['.render-frame', '.render-frame img'].map((s) => page.locator(`${panel} ${s}`).boundingBox()));
+      assert.ok(image.width > 0 && image.x >= frame.x && image.x + image.width <= frame.x + frame.width, `${screen.name} ${panel}: ${JSON.stringify({ frame, image })}`);
+    }
     assert.ok(await page.locator('#health').isVisible());
   }
   await page.locator(`#render-jobs tr[data-id="${running}"] button`).click();

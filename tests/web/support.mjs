@@ -11,6 +11,7 @@ import { chromium } from 'playwright-core';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const envmaps = path.resolve(here, '../data/envmaps');
+export const models = path.resolve(here, '../data/models');
 export const [mapWidth, mapHeight] = [256, 128]; // every map in tests/data/envmaps
 export const screenshots = process.env.LIGHTPROBE_SCREENSHOT_DIR || path.join(tmpdir(), 'lightprobe-dashboard');
 const serverBin = process.env.LIGHTPROBE_SERVER_BIN;

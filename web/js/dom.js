@@ -112,3 +112,16 @@ export function fillTable(table, rows) {
     [...row.cells].forEach((cell, i) => { if (cell.colSpan === 1 && headings[i]) cell.dataset.label = headings[i]; });
   $('tbody', table).replaceChildren(...rows);
 }
+
+// A button acting on its second click: the first arms it ("Sure?") for three seconds. Takes the
+// click event (kept from the row under the button); true when the click is the second.
+export function confirmClick(event) {
+  event.stopPropagation();
+  const button = event.currentTarget;
+  if (button.classList.contains('armed')) return true;
+  const text = button.textContent;
+  button.classList.add('armed');
+  button.textContent = 'Sure?';
+  setTimeout(() => { button.classList.remove('armed'); button.textContent = text; }, 3000);
+  return false;
+}

@@ -10,6 +10,7 @@ import { initPrefilter } from './prefilter.js';
 import { initSun } from './sun.js';
 import { initFresnel } from './fresnel.js';
 import { initRenders } from './renders.js';
+import { initModels } from './models.js';
 import { initHealth } from './health.js';
 
 function initMapSelect() {
@@ -40,5 +41,6 @@ initIbl();
 initPrefilter();
 initFresnel();
 initRenders();
+initModels();
 initHealth();
 refreshMaps();

@@ -1,9 +1,9 @@
 // The Maps panel: the loaded maps, the selected one's metadata and preview, upload and delete.
 import { api, apiUrl, loadImage } from './api.js';
-import { $, el, num, rgb, busy, debounce, showError, latestOnly, fillTable } from './dom.js';
+import { $, el, num, rgb, busy, debounce, latestOnly, fillTable, confirmClick } from './dom.js';
 import { state, on, setMaps, selectMap, currentMap } from './state.js';
 import { offerLinks, offerTable } from './downloads.js';
-import { checkFields } from './field_errors.js';
+import { uploadForm } from './upload.js';
 import { apiDocument, queryParameter, offerChoices } from './openapi.js';
 
 const panel = () => $('#maps-panel');
@@ -34,16 +34,8 @@ function renderList(maps) {
   offerTable($('#map-list-downloads'), 'envmaps', maps);
 }
 
-// Two clicks delete: the first arms the button for three seconds.
 async function askDelete(event, id) {
-  event.stopPropagation();
-  const button = event.currentTarget;
-  if (!button.classList.contains('armed')) {
-    button.classList.add('armed');
-    button.textContent = 'Sure?';
-    setTimeout(() => { button.classList.remove('armed'); button.textContent = 'Delete'; }, 3000);
-    return;
-  }
+  if (!confirmClick(event)) return;
   await busy(panel(), () => api(`/envmaps/${encodeURIComponent(id)}`, { method: 'DELETE' }));
   await refreshMaps();
 }
@@ -90,35 +82,18 @@ async function offerProjections() {
   });
 }
 
-// A file name's stem, made a valid map name.
-const nameFromFile = (file) => file.name.replace(/\.[^.]*$/, '').replace(/[^A-Za-z0-9._-]/g, '_').replace(/^\./, '_').slice(0, 64);
-
-async function upload(event) {
-  event.preventDefault();
-  if (!checkFields($('#upload-form'))) return;
-  const file = $('#upload-file').files[0];
-  if (!file) {
-    showError(panel(), 'choose an EXR, PFM or Radiance HDR file first');
-    return;
-  }
-  const name = $('#upload-name').value.trim() || nameFromFile(file);
-  const map = await busy(panel(), () =>
-    api(`/envmaps?name=${encodeURIComponent(name)}`, { method: 'POST', body: file, headers: { 'Content-Type': 'application/octet-stream' } }));
-  if (!map) return;
-  $('#upload-form').reset();
-  await refreshMaps();
-  selectMap(map.id);
-}
-
 export function initMaps() {
   on('maps', (maps) => { renderList(maps); renderMeta(); });
   on('map', () => { renderList(state.maps); renderMeta(); showPreview(); });
   $('#map-exposure').addEventListener('input', debounce(() => showPreview(), 120));
   $('#map-projection').addEventListener('change', () => showPreview());
   offerProjections();
-  $('#upload-file').addEventListener('change', () => {
-    const file = $('#upload-file').files[0];
-    if (file && !$('#upload-name').value) $('#upload-name').value = nameFromFile(file);
+  uploadForm($('#upload-form'), panel(), {
+    path: '/envmaps',
+    missing: 'choose an EXR, PFM or Radiance HDR file first',
+    done: async (map) => {
+      await refreshMaps();
+      selectMap(map.id);
+    },
   });
-  $('#upload-form').addEventListener('submit', upload);
 }

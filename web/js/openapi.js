@@ -30,6 +30,14 @@ export function bodyFields(doc, path, method = 'post') {
   return resolve(doc, body)?.properties ?? {};
 }
 
+// The schemas of the fields of a component schema, or of an object field inside it:
+// componentFields(doc, 'RenderCamera', 'fit') is {object: {...}, azimuth_deg: {...}, ...}.
+export function componentFields(doc, name, ...fields) {
+  let schema = resolve(doc, doc.components.schemas[name]);
+  for (const field of fields) schema = resolve(doc, schema?.properties?.[field]);
+  return schema?.properties ?? {};
+}
+
 // The schema of a query parameter of an operation.
 export function queryParameter(doc, path, name, method = 'get') {
   const parameters = (operation(doc, path, method)?.parameters ?? []).map((p) => resolve(doc, p));
