@@ -43,7 +43,9 @@ async function saveExr(bar, name) {
 }
 
 const BARS = ['map-list', 'map-image', 'samples-image', 'distribution', 'median-cut-image', 'median-cut-lights', 'fresnel',
-  'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image', 'prefilter'];
+  'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image', 'prefilter', 'model-list'];
+// Shown once a model is rendered (models.test.mjs).
+const MODEL_RENDER_BAR = 'model-render-image';
 
 const prefiltered = async (fields) => getJson(`/prefilters/${await prefilterChain(page, fields)}`);
 
@@ -54,7 +56,8 @@ test('the page offers every image and table for download once it shows them', as
   await prefiltered({ levels: 2, base_size: 16, samples: 16 });
   for (const bar of BARS) await page.locator(`#${bar}-downloads`).waitFor();
   const all = await page.$$eval('.downloads', (bars) => bars.map((b) => b.id.replace(/-downloads$/, '')));
-  assert.deepEqual(all.sort(), [...BARS].sort()); // (the side-by-side renders' links: dashboard.test.mjs)
+  // (the side-by-side renders' links: dashboard.test.mjs)
+  assert.deepEqual(all.sort(), [...BARS, MODEL_RENDER_BAR].sort());
 });
 
 test('the maps list as JSON and CSV, the map as PNG and EXR', async () => {

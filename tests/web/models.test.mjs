@@ -168,6 +168,7 @@ test('a framed render of the model under the map shows the model where the map a
   });
   assert.equal(shown.width, 64);
   assert.ok(shown.mean > 20, `mean of the shown image ${shown.mean} of 255`);
+  await page.locator('#model-render-image-downloads').waitFor(); // the image offered for download
 });
 
 test('a tar.gz of a .gltf with its buffer uploads, lists its cameras, and renders through its perspective camera', async () => {
