@@ -42,22 +42,31 @@ GltfBaseBsdf::GltfBaseBsdf(const GltfBaseParams& p)
       ior_(p.ior),
       transmission_(std::clamp(p.transmission, 0.0f, 1.0f)),
       thin_walled_(p.thin_walled),
-      smooth_(p.roughness * p.roughness < kMinModelAlpha),
+      mirror_(model_mirror(p.roughness)),
       f0_(dielectric_f0(p.ior, p.specular_color, std::clamp(p.specular, 0.0f, 1.0f))),
       f90_(std::clamp(p.specular, 0.0f, 1.0f)),
       max_channel_(f0_.x >= f0_.y && f0_.x >= f0_.z ? 0 : (f0_.y >= f0_.z ? 1 : 2)),
-      lobe_(model_alpha(p.roughness)),
-      e1_(ggx_albedo().row(model_alpha(p.roughness))),
-      e5_(schlick_tail_albedo().row(model_alpha(p.roughness))),
+      lobe_(mirror_ ? 0.0f : model_alpha(p.roughness)),
+      e1_(ggx_albedo().row(lobe_.ggx().alpha())),
+      e5_(schlick_tail_albedo().row(lobe_.ggx().alpha())),
       ms_fresnel_(lobe_.multiscatter_fresnel(f0_ + (Rgb{f90_, f90_, f90_} - f0_) * (1.0f / 21.0f))),
-      specular_average_(f0_[max_channel_] * (e1_.average() - e5_.average()) + f90_ * e5_.average() +
-                        ms_fresnel_[max_channel_] * lobe_.multiscatter_average()),
+      specular_average_(mean_specular_albedo()),
       metal_(p.base_color, 1.0f, p.roughness) {}
 
 float GltfBaseBsdf::specular_albedo(float cos_o) const {
   const int c = max_channel_;
+  if (mirror_) return schlick(cos_o)[c];
   return f0_[c] * (e1_(cos_o) - e5_(cos_o)) + f90_ * e5_(cos_o) +
          ms_fresnel_[c] * lobe_.multiscatter_albedo(cos_o);
+}
+
+// 2 * integral of specular_albedo(mu) mu dmu; for a mirror, that of Schlick's F: the (1 - mu)^5 term
+// averages to 2 B(2, 6) = 1 / 21.
+float GltfBaseBsdf::mean_specular_albedo() const {
+  const int c = max_channel_;
+  if (mirror_) return f0_[c] + (f90_ - f0_[c]) / 21.0f;
+  return f0_[c] * (e1_.average() - e5_.average()) + f90_ * e5_.average() +
+         ms_fresnel_[c] * lobe_.multiscatter_average();
 }
 
 GltfBaseBsdf::Choice GltfBaseBsdf::choice(float cos_o) const {
@@ -77,6 +86,7 @@ Rgb GltfBaseBsdf::schlick(float cos_d) const {
 }
 
 Rgb GltfBaseBsdf::eval_specular(Vec3 wo, Vec3 wi) const {
+  if (mirror_) return {};
   return lobe_.eval(
       wo, wi, [this](float cos_d) { return schlick(cos_d); }, ms_fresnel_);
 }
@@ -97,7 +107,7 @@ Rgb GltfBaseBsdf::eval(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z == 0) return {};
   const float rest = 1.0f - metallic_;
   if (wi.z < 0) {
-    if (!thin_walled_ || smooth_ || transmission_ <= 0) return {};
+    if (!thin_walled_ || mirror_ || transmission_ <= 0) return {};
     return eval_thin_transmission(wo, wi) * rest;
   }
   Rgb f{};
@@ -110,10 +120,11 @@ float GltfBaseBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z == 0) return 0;
   const Choice c = choice(wo.z);
   if (wi.z < 0) {
-    if (!thin_walled_ || smooth_) return 0;
+    if (!thin_walled_ || mirror_) return 0;
     return c.transmission * lobe_.pdf(wo, mirror_through_surface(wi));
   }
-  float p = c.specular * lobe_.pdf(wo, wi) + c.diffuse * cosine_hemisphere_pdf(wi.z);
+  float p = c.diffuse * cosine_hemisphere_pdf(wi.z);
+  if (!mirror_) p += c.specular * lobe_.pdf(wo, wi);
   if (metallic_ > 0) p += c.metal * metal_.pdf(wo, wi);
   return p;
 }
@@ -127,7 +138,7 @@ BsdfSample GltfBaseBsdf::weighted(Vec3 wo, Vec3 wi) const {
 // The delta transmissions: straight on through a smooth thin wall, refracted into a thick one.
 std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float probability) const {
   const Rgb tint = base_ * (transmission_ * (1.0f - specular_albedo(wo.z)) * (1.0f - metallic_));
-  if (thin_walled_ && smooth_) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
+  if (thin_walled_ && mirror_) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
   const std::optional<double> cos_t = transmitted_cos(wo.z, 1.0, ior_);
   if (!cos_t) return std::nullopt;
   const float eta = ior_;
@@ -145,15 +156,23 @@ std::optional<BsdfSample> GltfBaseBsdf::sample(Vec3 wo, float u_lobe, Point2 u) 
   const Choice c = choice(wo.z);
   std::optional<Vec3> wi;
   if (u_lobe < c.metal) {
-    const std::optional<BsdfSample> s = metal_.sample(wo, u_lobe / c.metal, u);
+    std::optional<BsdfSample> s = metal_.sample(wo, u_lobe / c.metal, u);
+    if (s && s->delta) {  // the metal's mirror, chosen with probability c.metal
+      s->weight = s->weight * (metallic_ / c.metal);
+      s->pdf *= c.metal;
+      return s;
+    }
     if (s) wi = s->wi;
   } else if (u_lobe - c.metal < c.specular) {
+    if (mirror_)
+      return BsdfSample{
+          {-wo.x, -wo.y, wo.z}, schlick(wo.z) * ((1.0f - metallic_) / c.specular), c.specular, 1.0f, true};
     wi = lobe_.sample(wo, (u_lobe - c.metal) / c.specular, u);
   } else if (u_lobe - c.metal < c.specular + c.diffuse) {
     wi = square_to_cosine_hemisphere(u.x, u.y);
   } else {
     if (!(c.transmission > 0)) return std::nullopt;
-    if (!thin_walled_ || smooth_) return sample_transmission(wo, c.transmission);
+    if (!thin_walled_ || mirror_) return sample_transmission(wo, c.transmission);
     const float v = (u_lobe - c.metal - c.specular - c.diffuse) / c.transmission;
     const std::optional<Vec3> m = lobe_.sample(wo, std::clamp(v, 0.0f, 0.99999994f), u);
     if (m) wi = mirror_through_surface(*m);

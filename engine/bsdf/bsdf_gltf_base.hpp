@@ -13,8 +13,9 @@
 //   transmission: base (1 - E_s(mu_o)) times a lobe of albedo 1: a thin wall sends the light on
 //                 through (the GGX lobe mirrored through the surface: straight on when smooth); a
 //                 thick one refracts it into the volume by Snell's law (always smooth here).
-// A smooth surface (roughness^2 below kMinModelAlpha) transmits as a delta lobe. A thick transmitting
-// surface is one-sided: from inside (wo.z < 0) it is a smooth dielectric interface of index ior.
+// A smooth surface (model_mirror(roughness)) reflects and transmits as delta lobes; E_s is then Schlick's
+// F itself. A thick transmitting surface is one-sided: from inside (wo.z < 0) it is a smooth dielectric
+// interface of index ior.
 #include "engine/bsdf/bsdf.hpp"
 #include "engine/bsdf/bsdf_metallic_roughness.hpp"
 #include "engine/bsdf/microfacet_multiscatter.hpp"
@@ -38,7 +39,7 @@ class GltfBaseBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_non_delta_lobe() const override { return true; }
+  bool has_non_delta_lobe() const override { return !mirror_ || (metallic_ < 1 && transmission_ < 1); }
   bool two_sided() const override { return thin_walled_ || transmission_ <= 0; }
 
   // The largest channel of E_s(mu): the part of the light the specular lobe takes.
@@ -49,6 +50,7 @@ class GltfBaseBsdf final : public Bsdf {
     float metal, specular, diffuse, transmission;
   };
   Choice choice(float cos_o) const;
+  float mean_specular_albedo() const;
   Rgb schlick(float cos_d) const;
   Rgb eval_specular(Vec3 wo, Vec3 wi) const;
   Rgb eval_diffuse(Vec3 wo, Vec3 wi) const;
@@ -62,7 +64,7 @@ class GltfBaseBsdf final : public Bsdf {
   float ior_;
   float transmission_;
   bool thin_walled_;
-  bool smooth_;  // roughness^2 below kMinModelAlpha: transmission is a delta lobe
+  bool mirror_;  // model_mirror(roughness): reflection and transmission are delta lobes
   Rgb f0_;
   float f90_;
   int max_channel_;  // the channel of the largest F0: that of the largest E_s at every angle

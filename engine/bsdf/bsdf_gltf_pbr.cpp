@@ -86,7 +86,11 @@ std::optional<BsdfSample> GltfPbrBsdf::sample(Vec3 wo, float u_lobe, Point2 u) c
   const Choice c = choice(wo);
   if (u_lobe < c.coat) {
     const std::optional<Vec3> wi = coat_->sample(wo, u);
-    return wi ? weighted(wo, *wi) : std::nullopt;
+    if (!wi) return std::nullopt;
+    if (!coat_->mirror()) return weighted(wo, *wi);
+    if (wi->z <= 0) return std::nullopt;
+    const float f = coat_->mirror_reflectance(wo) / c.coat;
+    return BsdfSample{*wi, {f, f, f}, c.coat, 1.0f, true};
   }
   if (u_lobe < c.coat + c.sheen) return weighted(wo, SheenLobe::sample(u));
   const float v = std::clamp((u_lobe - c.coat - c.sheen) / c.base, 0.0f, 0.99999994f);

@@ -36,7 +36,9 @@ class GltfPbrBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_non_delta_lobe() const override { return true; }
+  bool has_non_delta_lobe() const override {
+    return base().has_non_delta_lobe() || sheen_ || (coat_ && !coat_->mirror());
+  }
   bool two_sided() const override { return base().two_sided(); }
 
   // The clearcoat's normal in the local frame (unit; one at or below the surface is taken as z).

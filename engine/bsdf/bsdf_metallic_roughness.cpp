@@ -21,7 +21,11 @@ Rgb schlick_average(Rgb f0) {
 
 float model_alpha(float roughness) {
   const float r = std::clamp(roughness, 0.0f, 1.0f);
-  return std::max(r * r, kMinModelAlpha);
+  return r * r;
+}
+
+bool model_mirror(float roughness) {
+  return model_alpha(roughness) < kDeltaLobeAlpha;
 }
 
 const DielectricCoat& model_coat() {
@@ -32,11 +36,13 @@ const DielectricCoat& model_coat() {
 MetallicRoughnessBsdf::MetallicRoughnessBsdf(Rgb base_color, float metallic, float roughness)
     : base_(base_color),
       metallic_(std::clamp(metallic, 0.0f, 1.0f)),
-      metal_(model_alpha(roughness)),
-      metal_ms_fresnel_(metal_.multiscatter_fresnel(schlick_average(base_color))),
+      metal_mirror_(model_mirror(roughness)),
+      metal_(metal_mirror_ ? 0.0f : model_alpha(roughness)),
+      metal_ms_fresnel_(metal_mirror_ ? Rgb{} : metal_.multiscatter_fresnel(schlick_average(base_color))),
       dielectric_(base_color, model_alpha(roughness), model_coat()) {}
 
 Rgb MetallicRoughnessBsdf::eval_metal(Vec3 wo, Vec3 wi) const {
+  if (metal_mirror_) return {};
   return metal_.eval(
       wo, wi, [this](float cos_d) { return schlick(base_, cos_d); }, metal_ms_fresnel_);
 }
@@ -53,7 +59,7 @@ float MetallicRoughnessBsdf::pdf(Vec3 wo, Vec3 wi) const {
   if (wo.z <= 0 || wi.z <= 0) return 0;
   float p = 0;
   if (metallic_ < 1) p += dielectric_.pdf(wo, wi) * (1.0f - metallic_);
-  if (metallic_ > 0) p += metal_.pdf(wo, wi) * metallic_;
+  if (metallic_ > 0 && !metal_mirror_) p += metal_.pdf(wo, wi) * metallic_;
   return p;
 }
 
@@ -61,9 +67,14 @@ std::optional<BsdfSample> MetallicRoughnessBsdf::sample(Vec3 wo, float u_lobe, P
   if (wo.z <= 0) return std::nullopt;
   std::optional<Vec3> wi;
   if (u_lobe < metallic_) {
+    if (metal_mirror_) return BsdfSample{{-wo.x, -wo.y, wo.z}, schlick(base_, wo.z), metallic_, 1.0f, true};
     wi = metal_.sample(wo, u_lobe / metallic_, u);
   } else {
-    const std::optional<BsdfSample> s = dielectric_.sample(wo, (u_lobe - metallic_) / (1.0f - metallic_), u);
+    std::optional<BsdfSample> s = dielectric_.sample(wo, (u_lobe - metallic_) / (1.0f - metallic_), u);
+    if (s && s->delta) {
+      s->pdf *= 1.0f - metallic_;
+      return s;
+    }
     if (s) wi = s->wi;
   }
   if (!wi) return std::nullopt;

@@ -5,20 +5,22 @@
 //   metallic part: GGX reflection with Schlick's Fresnel of F0 = base colour, and the energy its single
 //     scattering loses given back (microfacet_multiscatter.hpp; F_avg of Schlick's F is
 //     F0 + (1 - F0) / 21 in closed form).
-// Both use GGX alpha = roughness^2, held at kMinModelAlpha or above: a glTF roughness of 0 renders as a
-// very sharp but not a delta lobe, so every model surface takes light samples and the mix stays one
-// smooth lobe set. A part is picked with probability (1 - metallic) / metallic.
+// Both use GGX alpha = roughness^2; below kDeltaLobeAlpha (roughness under 0.032, glTF's default clear
+// coat and polished chrome or glass) the specular lobes are mirrors (delta lobes), as in Cycles, so a
+// small bright source such as the sun keeps its full radiance in the reflection. A part is picked with
+// probability (1 - metallic) / metallic.
 #include "engine/bsdf/bsdf.hpp"
 #include "engine/bsdf/bsdf_plastic.hpp"
 #include "engine/bsdf/microfacet_multiscatter.hpp"
 
 namespace lp::render {
 
-inline constexpr float kMinModelAlpha = 1e-2f;
 inline constexpr float kModelDielectricIor = 1.5f;
 
-// GGX alpha of a glTF perceptual roughness: roughness^2, held at kMinModelAlpha or above.
+// GGX alpha of a glTF perceptual roughness: roughness^2 (roughness clamped to [0, 1]).
 float model_alpha(float roughness);
+// True when a glTF roughness makes a mirror: its alpha is below kDeltaLobeAlpha.
+bool model_mirror(float roughness);
 // The coat of index kModelDielectricIor with its albedo tables, shared by every model surface
 // (computed at first use).
 const DielectricCoat& model_coat();
@@ -30,13 +32,14 @@ class MetallicRoughnessBsdf final : public Bsdf {
   Rgb eval(Vec3 wo, Vec3 wi) const override;
   float pdf(Vec3 wo, Vec3 wi) const override;
   std::optional<BsdfSample> sample(Vec3 wo, float u_lobe, Point2 u) const override;
-  bool has_non_delta_lobe() const override { return true; }
+  bool has_non_delta_lobe() const override { return !(metal_mirror_ && metallic_ >= 1); }
 
  private:
   Rgb eval_metal(Vec3 wo, Vec3 wi) const;
 
   Rgb base_;
   float metallic_;
+  bool metal_mirror_;  // model_mirror(roughness): the metallic part is a delta lobe
   CompensatedGgx metal_;
   Rgb metal_ms_fresnel_;  // F_ms of the metallic part
   PlasticBsdf dielectric_;

@@ -118,6 +118,7 @@ std::vector<Case> non_delta_cases() {
       {"model_metal_r0.5", model_bsdf({0.9f, 0.6f, 0.3f}, 1.0f, 0.5f)},
       {"model_dielectric_r0.7", model_bsdf({0.2f, 0.5f, 0.8f}, 0.0f, 0.7f)},
       {"model_mixed_r1", model_bsdf({0.7f, 0.7f, 0.2f}, 0.4f, 1.0f)},
+      {"model_mixed_r0", model_bsdf({0.7f, 0.7f, 0.2f}, 0.4f, 0.0f)},
   };
 }
 
@@ -133,6 +134,12 @@ std::vector<Case> gltf_non_delta_cases() {
   cases.push_back(
       {"gltf_thin_transmission_coated",
        gltf_bsdf(with_clearcoat(with_transmission(gltf({1, 1, 1}, 0.1f, 0.7f), 1, true), 1, 0.4f))});
+  cases.push_back(
+      {"gltf_clearcoat_r0", gltf_bsdf(with_clearcoat(gltf({0.4f, 0.5f, 0.6f}, 0.3f, 0.6f), 1, 0))});
+  cases.push_back(
+      {"gltf_ior_1.33_r0", gltf_bsdf(with_specular(gltf({0.6f, 0.3f, 0.2f}, 0.5f, 0), 1.33f, 1, {1, 1, 1}))});
+  cases.push_back({"gltf_thin_transmission_r0",
+                   gltf_bsdf(with_transmission(gltf({0.9f, 0.8f, 0.6f}, 0, 0), 0.5f, true))});
   cases.push_back({"gltf_thick_transmission_r0.3",
                    gltf_bsdf(with_transmission(gltf({0.9f, 0.9f, 0.9f}, 0, 0.3f), 0.6f, false))});
   return cases;
@@ -311,6 +318,9 @@ TEST(RenderBsdf, CompensatedWhiteLobesReflectEverything) {
       {"model_metal_r1", model_bsdf({1, 1, 1}, 1, 1)},
       {"model_dielectric_r0.5", model_bsdf({1, 1, 1}, 0, 0.5f)},
       {"model_mixed_r0.8", model_bsdf({1, 1, 1}, 0.5f, 0.8f)},
+      {"model_metal_r0", model_bsdf({1, 1, 1}, 1, 0)},
+      {"model_dielectric_r0", model_bsdf({1, 1, 1}, 0, 0)},
+      {"model_mixed_r0", model_bsdf({1, 1, 1}, 0.5f, 0)},
   };
   for (const Case& c : cases)
     for (float theta : {0.0f, 45.0f, 70.0f, 85.0f}) {
@@ -328,7 +338,11 @@ TEST(RenderBsdf, GltfBasesWithoutLayersConserveEnergy) {
       {"ior_1.33_r0.5", gltf_bsdf(with_specular(gltf(white, 0, 0.5f), 1.33f, 1, white))},
       {"ior_2.5_r0.1", gltf_bsdf(with_specular(gltf(white, 0, 0.1f), 2.5f, 1, white))},
       {"specular_0.5_r1", gltf_bsdf(with_specular(gltf(white, 0, 1), 1.5f, 0.5f, white))},
+      {"ior_1.33_r0", gltf_bsdf(with_specular(gltf(white, 0, 0), 1.33f, 1, white))},
+      {"specular_0.5_r0", gltf_bsdf(with_specular(gltf(white, 0, 0), 1.5f, 0.5f, white))},
+      {"half_metal_ior_1.33_r0", gltf_bsdf(with_specular(gltf(white, 0.5f, 0), 1.33f, 1, white))},
       {"thin_smooth", gltf_bsdf(with_transmission(gltf(white, 0, 0), 1, true))},
+      {"thin_half_smooth", gltf_bsdf(with_transmission(gltf(white, 0, 0), 0.5f, true))},
       {"thin_r0.5", gltf_bsdf(with_transmission(gltf(white, 0, 0.5f), 1, true))},
       {"thin_half_r0.8", gltf_bsdf(with_transmission(gltf(white, 0, 0.8f), 0.5f, true))},
       {"thick_r0.3", gltf_bsdf(with_transmission(gltf(white, 0, 0.3f), 1, false))},
@@ -339,6 +353,52 @@ TEST(RenderBsdf, GltfBasesWithoutLayersConserveEnergy) {
       const double e = albedo(*c.bsdf, direction(theta, 0.4f), 1, 200000);
       EXPECT_NEAR(e, 1.0, 5e-3) << c.name << " theta " << theta;
     }
+}
+
+TEST(RenderBsdf, RoughnessZeroIsAMirror) {
+  // A polished metal, a smooth plastic's coat, glTF's smooth specular layer and its default clear coat
+  // (roughness 0) reflect as mirrors: every such sample goes to wo mirrored, carrying the lobe's Fresnel
+  // factor F(wo.n) (weight times the probability of the lobe), so a small bright source keeps its radiance.
+  const Rgb base{0.9f, 0.6f, 0.3f};
+  const auto schlick = [](Rgb f0, float mu) { return f0 + (Rgb{1, 1, 1} - f0) * std::pow(1.0f - mu, 5.0f); };
+  const auto coat_f = [](float mu) { return float(fresnel_dielectric(mu, 1.0, kModelDielectricIor)); };
+  struct Mirror {
+    std::string name;
+    std::shared_ptr<const Bsdf> bsdf;
+    float u_lobe;  // chooses the mirror lobe
+    std::function<Rgb(float mu)> reflectance;
+  };
+  const std::vector<Mirror> mirrors = {
+      {"model_metal", model_bsdf(base, 1, 0), 0.5f, [&](float mu) { return schlick(base, mu); }},
+      {"model_half_metal", model_bsdf(base, 0.5f, 0.02f), 0.25f,
+       [&](float mu) { return schlick(base, mu) * 0.5f; }},
+      {"gltf_specular", gltf_bsdf(with_specular(gltf({0, 0, 0}, 0, 0), 1.33f, 1, {1, 1, 1})), 0.5f,
+       [&](float mu) {
+         const float f0 = (0.33f / 2.33f) * (0.33f / 2.33f);
+         return schlick({f0, f0, f0}, mu);
+       }},
+      {"gltf_clearcoat", gltf_bsdf(with_clearcoat(gltf(base, 0, 0.5f), 1, 0)), 0.0f,
+       [&](float mu) {
+         return Rgb{coat_f(mu), coat_f(mu), coat_f(mu)};
+       }},
+  };
+  for (const Mirror& m : mirrors) {
+    EXPECT_EQ(m.bsdf->has_non_delta_lobe(), m.name != "model_metal") << m.name;
+    for (float theta : {0.0f, 40.0f, 75.0f}) {
+      const Vec3 wo = direction(theta, 1.1f);
+      const auto s = m.bsdf->sample(wo, m.u_lobe, {0.3f, 0.8f});
+      ASSERT_TRUE(s && s->delta) << m.name << " theta " << theta;
+      EXPECT_NEAR(s->wi.x, -wo.x, 1e-6f) << m.name;
+      EXPECT_NEAR(s->wi.y, -wo.y, 1e-6f) << m.name;
+      EXPECT_NEAR(s->wi.z, wo.z, 1e-6f) << m.name;
+      const Rgb expected = m.reflectance(wo.z);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(s->weight[k] * s->pdf, expected[k], 1e-5f) << m.name << " theta " << theta;
+      if (!m.bsdf->has_non_delta_lobe()) {
+        EXPECT_EQ(m.bsdf->eval(wo, s->wi), (Rgb{})) << m.name;
+      }
+    }
+  }
 }
 
 TEST(RenderBsdf, GltfClearTransmissionIsIndexMatchedAtIorOne) {
