@@ -32,7 +32,7 @@ std::optional<Vec3> refracting_normal(Vec3 wo, Vec3 wi, float eta) {
   return m;
 }
 
-// |dm / dwi| of the refraction of wo about m into wi (Walter et al. eq. 16).
+// |dm / dwi| of the refraction of wo about m into wi (Walter et al. 2007).
 float refraction_jacobian(Vec3 wo, Vec3 wi, Vec3 m, float eta) {
   const float s = dot(wo, m) + eta * dot(wi, m);
   return eta * eta * std::abs(dot(wi, m)) / (s * s);
