@@ -35,6 +35,7 @@ def parse_args():
     p.add_argument("--out", required=True)
     p.add_argument("--compare", default="")
     p.add_argument("--noise", action="store_true", help="also render a second seed, for the noise floor")
+    p.add_argument("--compare-seed2", default="", help="lightprobe's render of another seed: its noise floor")
     return p.parse_args(argv)
 
 
@@ -79,6 +80,9 @@ def main():
             # unbiased renders of equal noise would measure.
             again = cycles_setup.render_pixels(scene, args.spp, 2, args.out + ".seed2.exr")
             result["relmse_noise"] = cycles_setup.rel_mse(again, cycles, covered)
+        if args.compare_seed2:
+            ours2 = cycles_setup.load_pixels(os.path.abspath(args.compare_seed2))
+            result["relmse_noise_lightprobe"] = cycles_setup.rel_mse(ours2, ours, covered)
         result["mean_cycles_model"] = mean_rgb(cycles, covered)
         result["mean_lightprobe_model"] = mean_rgb(ours, covered)
         save_side_by_side(ours, cycles, args.width, args.height, args.out + ".side_by_side.png")

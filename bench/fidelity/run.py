@@ -13,8 +13,9 @@ Needs Blender and NumPy for its glTF add-on (Debian: apt-get install blender pyt
 the setup) and a built tree. Run from the repository:
   python3 bench/fidelity/run.py --map ../shared/data/envmaps/forest.exr [--size 256] [--spp 512]
       [--cycles-spp 512] [--threads 2] [--no-mipmaps] [--only NAME ...] [--out DIR]
-Prints a Markdown table: relMSE over the pixels the model covers, the noise floor (the same between two
-Cycles renders of different seeds), relMSE over the whole image (where the map, seen directly, matches
+Prints a Markdown table: relMSE over the pixels the model covers, the noise floors (the same between two
+Cycles renders of different seeds, and between two lightprobe renders; two unbiased renders differ
+by about the mean of the two), relMSE over the whole image (where the map, seen directly, matches
 by construction), the model pixels' mean colour in each, both renderers' times and the warnings of the
 upload and the render. Beside the images, NAME.cycles.exr.side_by_side.png shows lightprobe | Cycles |
 4 x |difference|.
@@ -139,7 +140,13 @@ class Server:
 
 def render_here(server, args, name, body, folder):
     asset = server.call("POST", f"/assets?name={name}", body, "application/octet-stream")
-    request = {"envmap": "map", "width": args.size, "height": args.size, "spp": args.spp,
+    job, image = render_seed(server, args, name, 0, os.path.join(folder, f"{name}.lightprobe.exr"))
+    render_seed(server, args, name, 1, os.path.join(folder, f"{name}.lightprobe.seed2.exr"))
+    return asset, job, image
+
+
+def render_seed(server, args, name, seed, image):
+    request = {"envmap": "map", "width": args.size, "height": args.size, "spp": args.spp, "seed": seed,
                "max_depth": args.bounces, "mipmaps": not args.no_mipmaps, "scene": {"objects": [{"type": "mesh", "path": f"assets/{name}"}]}}
     job = server.call("POST", "/renders", request)
     while job["status"] in ("queued", "running"):
@@ -147,17 +154,17 @@ def render_here(server, args, name, body, folder):
         job = server.call("GET", f"/renders/{job['id']}")
     if job["status"] != "done":
         sys.exit(f"{name}: render {job['status']}: {job.get('error')}")
-    image = os.path.join(folder, f"{name}.lightprobe.exr")
     with open(image, "wb") as f:
         f.write(server.call("GET", f"/renders/{job['id']}/image?format=exr"))
-    return asset, job, image
+    return job, image
 
 
 def render_cycles(args, name, camera, compare, folder):
     out = blender(args, "cycles_render.py", "--model", model_file(name, folder), "--map", args.map,
                   "--camera", json.dumps(camera), "--width", str(args.size), "--height", str(args.size),
                   "--spp", str(args.cycles_spp), "--bounces", str(args.bounces), "--threads", str(args.threads),
-                  "--out", os.path.join(folder, f"{name}.cycles.exr"), "--compare", compare, "--noise")
+                  "--out", os.path.join(folder, f"{name}.cycles.exr"), "--compare", compare, "--noise",
+                  "--compare-seed2", compare.replace(".lightprobe.exr", ".lightprobe.seed2.exr"))
     return json.loads(out.split("fidelity ", 1)[1].splitlines()[0])
 
 
@@ -173,8 +180,8 @@ def main():
     server = Server(args, state)
     print(f"# {args.size}x{args.size}, lightprobe {args.spp} spp, Cycles {args.cycles_spp} spp, {args.bounces} "
           f"bounces, map {os.path.basename(args.map)}, {args.threads} threads; images in {folder}", flush=True)
-    print("| model | triangles | relMSE (model pixels) | noise floor | relMSE (image) | mean RGB, Cycles | "
-          "mean RGB, lightprobe | lightprobe s | Cycles s | warnings |")
+    print("| model | triangles | relMSE (model pixels) | noise: Cycles, lightprobe | relMSE (image) | "
+          "mean RGB, Cycles | mean RGB, lightprobe | lightprobe s | Cycles s | warnings |")
     print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
     try:
         for name in names:
@@ -184,7 +191,8 @@ def main():
             warnings = asset.get("warnings", []) + job.get("warnings", [])
             triangles = asset.get("triangles", "")
             rgb = lambda c: " ".join(f"{x:.3f}" for x in c)  # noqa: E731
-            print(f"| {name} | {triangles} | {result['relmse_model']:.4f} | {result['relmse_noise']:.4f} | "
+            noise = f"{result['relmse_noise']:.4f}, {result['relmse_noise_lightprobe']:.4f}"
+            print(f"| {name} | {triangles} | {result['relmse_model']:.4f} | {noise} | "
                   f"{result['relmse_image']:.4f} | {rgb(result['mean_cycles_model'])} | "
                   f"{rgb(result['mean_lightprobe_model'])} | {job['elapsed_s']:.1f} | "
                   f"{result['cycles_seconds']:.1f} | {'; '.join(warnings) or 'none'} |", flush=True)
