@@ -51,7 +51,10 @@ GltfBaseBsdf::GltfBaseBsdf(const GltfBaseParams& p)
       e5_(schlick_tail_albedo().row(lobe_.ggx().alpha())),
       ms_fresnel_(lobe_.multiscatter_fresnel(f0_ + (Rgb{f90_, f90_, f90_} - f0_) * (1.0f / 21.0f))),
       specular_average_(mean_specular_albedo()),
-      metal_(p.base_color, 1.0f, p.roughness) {}
+      metal_(p.base_color, 1.0f, p.roughness) {
+  if (!thin_walled_ && !mirror_ && transmission_ > 0 && ior_ != 1)
+    interface_.emplace(ior_, model_alpha(p.roughness));
+}
 
 float GltfBaseBsdf::specular_albedo(float cos_o) const {
   const int c = max_channel_;
@@ -97,19 +100,29 @@ Rgb GltfBaseBsdf::eval_diffuse(Vec3 wo, Vec3 wi) const {
   return base_ * ((1.0f - transmission_) * t * wi.z);
 }
 
-Rgb GltfBaseBsdf::eval_thin_transmission(Vec3 wo, Vec3 wi) const {
+Rgb GltfBaseBsdf::transmission_tint(float cos_o) const {
+  return base_ * (transmission_ * (1.0f - specular_albedo(cos_o)) * (1.0f - metallic_));
+}
+
+// The rough transmission lobes (the smooth ones are delta): wo above, wi below the surface.
+Rgb GltfBaseBsdf::eval_transmission(Vec3 wo, Vec3 wi) const {
+  if (interface_) return transmission_tint(wo.z) * (interface_->refraction_pdf(wo, wi) / (ior_ * ior_));
+  if (!thin_walled_ || mirror_) return {};
   const auto white = [](float) { return Rgb{1, 1, 1}; };
-  const Rgb lobe = lobe_.eval(wo, mirror_through_surface(wi), white, Rgb{1, 1, 1});
-  return base_ * lobe * (transmission_ * (1.0f - specular_albedo(wo.z)));
+  return transmission_tint(wo.z) * lobe_.eval(wo, mirror_through_surface(wi), white, Rgb{1, 1, 1});
+}
+
+float GltfBaseBsdf::transmission_pdf(Vec3 wo, Vec3 wi) const {
+  if (interface_) return interface_->refraction_pdf(wo, wi);
+  if (!thin_walled_ || mirror_) return 0;
+  return lobe_.pdf(wo, mirror_through_surface(wi));
 }
 
 Rgb GltfBaseBsdf::eval(Vec3 wo, Vec3 wi) const {
+  if (wo.z < 0 && interface_) return interface_->eval(wo, wi);
   if (wo.z <= 0 || wi.z == 0) return {};
+  if (wi.z < 0) return transmission_ > 0 ? eval_transmission(wo, wi) : Rgb{};
   const float rest = 1.0f - metallic_;
-  if (wi.z < 0) {
-    if (!thin_walled_ || mirror_ || transmission_ <= 0) return {};
-    return eval_thin_transmission(wo, wi) * rest;
-  }
   Rgb f{};
   if (metallic_ > 0) f += metal_.eval(wo, wi) * metallic_;
   if (rest > 0) f += (eval_specular(wo, wi) + eval_diffuse(wo, wi)) * rest;
@@ -117,12 +130,10 @@ Rgb GltfBaseBsdf::eval(Vec3 wo, Vec3 wi) const {
 }
 
 float GltfBaseBsdf::pdf(Vec3 wo, Vec3 wi) const {
+  if (wo.z < 0 && interface_) return interface_->pdf(wo, wi);
   if (wo.z <= 0 || wi.z == 0) return 0;
   const Choice c = choice(wo.z);
-  if (wi.z < 0) {
-    if (!thin_walled_ || mirror_) return 0;
-    return c.transmission * lobe_.pdf(wo, mirror_through_surface(wi));
-  }
+  if (wi.z < 0) return c.transmission > 0 ? c.transmission * transmission_pdf(wo, wi) : 0;
   float p = c.diffuse * cosine_hemisphere_pdf(wi.z);
   if (!mirror_) p += c.specular * lobe_.pdf(wo, wi);
   if (metallic_ > 0) p += c.metal * metal_.pdf(wo, wi);
@@ -137,8 +148,8 @@ BsdfSample GltfBaseBsdf::weighted(Vec3 wo, Vec3 wi) const {
 
 // The delta transmissions: straight on through a smooth thin wall, refracted into a thick one.
 std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float probability) const {
-  const Rgb tint = base_ * (transmission_ * (1.0f - specular_albedo(wo.z)) * (1.0f - metallic_));
-  if (thin_walled_ && mirror_) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
+  const Rgb tint = transmission_tint(wo.z);
+  if (thin_walled_ || ior_ == 1) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
   const std::optional<double> cos_t = transmitted_cos(wo.z, 1.0, ior_);
   if (!cos_t) return std::nullopt;
   const float eta = ior_;
@@ -146,12 +157,14 @@ std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float proba
   return BsdfSample{wi, tint / (probability * eta * eta), probability, eta, true};
 }
 
-std::optional<BsdfSample> GltfBaseBsdf::sample_from_inside(Vec3 wo, float u_lobe) const {
+std::optional<BsdfSample> GltfBaseBsdf::sample_from_inside(Vec3 wo, float u_lobe, Point2 u) const {
+  if (interface_) return interface_->sample(wo, u_lobe, u);
+  if (ior_ == 1) return BsdfSample{-wo, {1, 1, 1}, 1.0f, 1.0f, true};
   return DielectricBsdf(ior_).sample(wo, u_lobe, {});
 }
 
 std::optional<BsdfSample> GltfBaseBsdf::sample(Vec3 wo, float u_lobe, Point2 u) const {
-  if (wo.z < 0 && !two_sided()) return sample_from_inside(wo, u_lobe);
+  if (wo.z < 0 && !two_sided()) return sample_from_inside(wo, u_lobe, u);
   if (wo.z <= 0) return std::nullopt;
   const Choice c = choice(wo.z);
   std::optional<Vec3> wi;
@@ -172,14 +185,20 @@ std::optional<BsdfSample> GltfBaseBsdf::sample(Vec3 wo, float u_lobe, Point2 u) 
     wi = square_to_cosine_hemisphere(u.x, u.y);
   } else {
     if (!(c.transmission > 0)) return std::nullopt;
-    if (!thin_walled_ || mirror_) return sample_transmission(wo, c.transmission);
-    const float v = (u_lobe - c.metal - c.specular - c.diffuse) / c.transmission;
-    const std::optional<Vec3> m = lobe_.sample(wo, std::clamp(v, 0.0f, 0.99999994f), u);
-    if (m) wi = mirror_through_surface(*m);
+    if (interface_) {
+      wi = interface_->sample_refraction(wo, u);
+    } else if (thin_walled_ && !mirror_) {
+      const float v = (u_lobe - c.metal - c.specular - c.diffuse) / c.transmission;
+      const std::optional<Vec3> m = lobe_.sample(wo, std::clamp(v, 0.0f, 0.99999994f), u);
+      if (m) wi = mirror_through_surface(*m);
+    } else {
+      return sample_transmission(wo, c.transmission);
+    }
   }
   if (!wi || wi->z == 0) return std::nullopt;
-  const BsdfSample s = weighted(wo, *wi);
+  BsdfSample s = weighted(wo, *wi);
   if (!(s.pdf > 0)) return std::nullopt;
+  if (interface_ && wi->z < 0) s.eta = ior_;
   return s;
 }
 

@@ -12,12 +12,16 @@
 //                 exactly base (1 - E_s(mu_o));
 //   transmission: base (1 - E_s(mu_o)) times a lobe of albedo 1: a thin wall sends the light on
 //                 through (the GGX lobe mirrored through the surface: straight on when smooth); a
-//                 thick one refracts it into the volume by Snell's law (always smooth here).
+//                 thick one refracts it into the volume by Snell's law about a visible GGX normal
+//                 (the refraction lobe of bsdf_rough_dielectric.hpp; by the surface's normal when
+//                 smooth).
 // A smooth surface (model_mirror(roughness)) reflects and transmits as delta lobes; E_s is then Schlick's
-// F itself. A thick transmitting surface is one-sided: from inside (wo.z < 0) it is a smooth dielectric
-// interface of index ior.
+// F itself. A thick transmitting surface is one-sided: from inside (wo.z < 0) it is a dielectric
+// interface of index ior of the same roughness (bsdf_rough_dielectric.hpp; bsdf_dielectric.hpp when
+// smooth). An index of 1 makes no interface: the light goes straight on.
 #include "engine/bsdf/bsdf.hpp"
 #include "engine/bsdf/bsdf_metallic_roughness.hpp"
+#include "engine/bsdf/bsdf_rough_dielectric.hpp"
 #include "engine/bsdf/microfacet_multiscatter.hpp"
 
 namespace lp::render {
@@ -54,9 +58,11 @@ class GltfBaseBsdf final : public Bsdf {
   Rgb schlick(float cos_d) const;
   Rgb eval_specular(Vec3 wo, Vec3 wi) const;
   Rgb eval_diffuse(Vec3 wo, Vec3 wi) const;
-  Rgb eval_thin_transmission(Vec3 wo, Vec3 wi) const;
+  Rgb transmission_tint(float cos_o) const;  // what the transmission lobe carries, of albedo 1
+  Rgb eval_transmission(Vec3 wo, Vec3 wi) const;
+  float transmission_pdf(Vec3 wo, Vec3 wi) const;
   std::optional<BsdfSample> sample_transmission(Vec3 wo, float probability) const;
-  std::optional<BsdfSample> sample_from_inside(Vec3 wo, float u_lobe) const;
+  std::optional<BsdfSample> sample_from_inside(Vec3 wo, float u_lobe, Point2 u) const;
   BsdfSample weighted(Vec3 wo, Vec3 wi) const;
 
   Rgb base_;
@@ -73,6 +79,7 @@ class GltfBaseBsdf final : public Bsdf {
   Rgb ms_fresnel_;
   float specular_average_;  // cosine-weighted mean of specular_albedo
   MetallicRoughnessBsdf metal_;
+  std::optional<RoughDielectricBsdf> interface_;  // a thick, rough surface's boundary
 };
 
 }  // namespace lp::render

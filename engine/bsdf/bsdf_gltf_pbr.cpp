@@ -96,7 +96,11 @@ std::optional<BsdfSample> GltfPbrBsdf::sample(Vec3 wo, float u_lobe, Point2 u) c
   const float v = std::clamp((u_lobe - c.coat - c.sheen) / c.base, 0.0f, 0.99999994f);
   std::optional<BsdfSample> s = base().sample(wo, v, u);
   if (!s) return std::nullopt;
-  if (!s->delta) return weighted(wo, s->wi);
+  if (!s->delta) {
+    std::optional<BsdfSample> w = weighted(wo, s->wi);
+    if (w) w->eta = s->eta;  // a refraction into the volume
+    return w;
+  }
   s->weight = s->weight * (layer_scale(wo, s->wi) / c.base);
   s->pdf *= c.base;
   return s;

@@ -12,6 +12,7 @@
 #include "engine/bsdf/bsdf_gltf_pbr.hpp"
 #include "engine/bsdf/bsdf_metallic_roughness.hpp"
 #include "engine/bsdf/bsdf_plastic.hpp"
+#include "engine/bsdf/bsdf_rough_dielectric.hpp"
 #include "engine/core/constants.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
@@ -19,7 +20,7 @@
 #include "engine/fresnel/dielectric.hpp"
 #include "engine/fresnel/metals.hpp"
 #include "engine/render/material_bsdf.hpp"
-#include "support/chi_square.hpp"
+#include "support/sphere_chi_square.hpp"
 
 namespace lp::render {
 namespace {
@@ -140,6 +141,9 @@ std::vector<Case> gltf_non_delta_cases() {
       {"gltf_ior_1.33_r0", gltf_bsdf(with_specular(gltf({0.6f, 0.3f, 0.2f}, 0.5f, 0), 1.33f, 1, {1, 1, 1}))});
   cases.push_back({"gltf_thin_transmission_r0",
                    gltf_bsdf(with_transmission(gltf({0.9f, 0.8f, 0.6f}, 0, 0), 0.5f, true))});
+  cases.push_back({"gltf_thick_transmission_coated_r0.6",
+                   gltf_bsdf(with_clearcoat(with_transmission(gltf({0.9f, 0.9f, 0.9f}, 0.2f, 0.6f), 1, false),
+                                            1, 0.3f))});
   cases.push_back({"gltf_thick_transmission_r0.3",
                    gltf_bsdf(with_transmission(gltf({0.9f, 0.9f, 0.9f}, 0, 0.3f), 0.6f, false))});
   return cases;
@@ -147,64 +151,22 @@ std::vector<Case> gltf_non_delta_cases() {
 
 const float kThetas[] = {10.0f, 55.0f, 82.0f};
 
-// Cells of equal solid angle: cos(theta) in [-1, 1] x phi in [0, 2 pi).
-class SphereHistogram {
- public:
-  static constexpr int kCos = 20, kPhi = 40;
-
-  static int cell(Vec3 w) {
-    const int i = std::clamp(int((w.z + 1.0f) * 0.5f * kCos), 0, kCos - 1);
-    float phi = std::atan2(w.y, w.x);
-    if (phi < 0) phi += 2 * kPiF;
-    const int j = std::clamp(int(phi / (2 * kPiF) * kPhi), 0, kPhi - 1);
-    return i * kPhi + j;
-  }
-
-  // N * integral of pdf over each cell (midpoint rule on a fine sub-grid), plus a last cell for the
-  // delta lobes and failed samples: N * (1 - integral over the sphere).
-  static std::vector<double> expected(const std::function<float(Vec3)>& pdf, double n) {
-    constexpr int kSub = 16;
-    std::vector<double> e(kCos * kPhi + 1, 0.0);
-    double total = 0;
-    const double dc = 2.0 / kCos / kSub, dp = 2.0 * kPi / kPhi / kSub;
-    for (int i = 0; i < kCos; ++i)
-      for (int j = 0; j < kPhi; ++j) {
-        double sum = 0;
-        for (int a = 0; a < kSub; ++a)
-          for (int b = 0; b < kSub; ++b) {
-            const double c = -1.0 + (i * kSub + a + 0.5) * dc;
-            const double phi = (j * kSub + b + 0.5) * dp;
-            const double s = std::sqrt(std::max(0.0, 1 - c * c));
-            sum += pdf({float(s * std::cos(phi)), float(s * std::sin(phi)), float(c)});
-          }
-        e[i * kPhi + j] = sum * dc * dp * n;
-        total += sum * dc * dp;
-      }
-    e.back() = std::max(0.0, 1.0 - total) * n;
-    return e;
-  }
-};
-
+// Delta lobes and failed samples fall in the chi-square's last cell, which expects the mass the pdf
+// lacks.
 void expect_sampling_matches_pdf(const std::vector<Case>& cases) {
   constexpr int kSamples = 250000;
   for (const Case& c : cases) {
     const Bsdf* bsdf = c.bsdf.get();
     for (float theta : kThetas) {
       const Vec3 wo = direction(theta, 0.7f);
-      std::vector<double> observed(SphereHistogram::kCos * SphereHistogram::kPhi + 1, 0.0);
-      Rng rng(42, uint64_t(theta * 100));
-      for (int i = 0; i < kSamples; ++i) {
-        const float u_lobe = rng.uniform_float();
-        const Point2 u{rng.uniform_float(), rng.uniform_float()};
-        const auto s = bsdf->sample(wo, u_lobe, u);
-        // No sample (a microfacet reflection below the horizon) and delta lobes: the mass the pdf lacks.
-        if (!s || s->delta)
-          observed.back() += 1;
-        else
-          observed[SphereHistogram::cell(s->wi)] += 1;
-      }
-      const auto expected = SphereHistogram::expected([&](Vec3 wi) { return bsdf->pdf(wo, wi); }, kSamples);
-      const auto r = test::chi_square_test(observed, expected);
+      const auto r = test::sphere_chi_square(
+          [&](Rng& rng) -> std::optional<Vec3> {
+            const float u_lobe = rng.uniform_float();
+            const Point2 u{rng.uniform_float(), rng.uniform_float()};
+            const auto s = bsdf->sample(wo, u_lobe, u);
+            return s && !s->delta ? std::optional<Vec3>(s->wi) : std::nullopt;
+          },
+          [&](Vec3 wi) { return bsdf->pdf(wo, wi); }, kSamples, uint64_t(theta * 100) + 1);
       std::printf("%s theta %.0f: %s\n", c.name.c_str(), double(theta), r.summary().c_str());
       EXPECT_GT(r.p_value, 0.01) << c.name << " theta " << theta << ": " << r.summary();
     }
@@ -399,6 +361,23 @@ TEST(RenderBsdf, RoughnessZeroIsAMirror) {
       }
     }
   }
+}
+
+TEST(RenderBsdf, GltfRoughThickSurfaceIsARoughInterfaceFromInside) {
+  // Seen from inside its volume, a rough transmitting surface of roughness r is the rough dielectric
+  // interface of its index and alpha r^2: it reflects and refracts back out through the same microfacets.
+  const float roughness = 0.5f, ior = 1.5f;
+  const auto gltf_surface = gltf_bsdf(with_transmission(gltf({1, 1, 1}, 0, roughness), 1, false));
+  const RoughDielectricBsdf interface(ior, roughness * roughness);
+  Rng rng(5, 2);
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 wo = direction(100 + 75 * rng.uniform_float(), 2 * kPiF * rng.uniform_float());
+    const Vec3 wi = direction(175 * rng.uniform_float(), 2 * kPiF * rng.uniform_float());
+    EXPECT_EQ(gltf_surface->eval(wo, wi), interface.eval(wo, wi));
+    EXPECT_EQ(gltf_surface->pdf(wo, wi), interface.pdf(wo, wi));
+  }
+  EXPECT_TRUE(gltf_surface->has_non_delta_lobe());
+  EXPECT_FALSE(gltf_surface->two_sided());
 }
 
 TEST(RenderBsdf, GltfClearTransmissionIsIndexMatchedAtIorOne) {
