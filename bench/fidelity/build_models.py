@@ -177,12 +177,12 @@ def gltf_settings_node(mat):
     return node
 
 
-def glass_sphere(folder):
+def glass_sphere(folder, roughness=0.0):
     """A solid glass ball of index 1.5 (KHR_materials_transmission, _ior, _volume with a faint tint)."""
     bpy.ops.mesh.primitive_uv_sphere_add(segments=128, ring_count=64, radius=1)
     obj = bpy.context.active_object
     smooth(obj)
-    mat, _ = principled("glass", **{"Base Color": (1, 1, 1, 1), "Roughness": 0.0, "Transmission": 1.0,
+    mat, _ = principled("glass", **{"Base Color": (1, 1, 1, 1), "Roughness": roughness, "Transmission": 1.0,
                                      "IOR": 1.5})
     settings = gltf_settings_node(mat)
     settings.inputs["Thickness"].default_value = 2.0
@@ -192,6 +192,11 @@ def glass_sphere(folder):
     out = mat.node_tree.nodes["Material Output"]
     mat.node_tree.links.new(absorption.outputs["Volume"], out.inputs["Volume"])
     assign(obj, mat)
+
+
+def frosted_glass_sphere(folder):
+    """The glass ball with a roughness of 0.3: a rough interface (GGX refraction) on a volume."""
+    glass_sphere(folder, roughness=0.3)
 
 
 def clearcoat_sphere(folder):
@@ -227,6 +232,7 @@ MODELS = {
     "emissive_panels": emissive_panels,
     "alpha_leaf": alpha_leaf,
     "glass_sphere": glass_sphere,
+    "frosted_glass_sphere": frosted_glass_sphere,
     "clearcoat_sphere": clearcoat_sphere,
     "vertex_colours": vertex_colours,
 }

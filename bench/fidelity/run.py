@@ -38,7 +38,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
 ASSIMP = "/usr/share/assimp/models/glTF2"
 BUILT = ["suzanne_textured", "sphere_grid", "normal_mapped_box", "emissive_panels", "alpha_leaf",
-         "glass_sphere", "clearcoat_sphere", "vertex_colours"]
+         "glass_sphere", "frosted_glass_sphere", "clearcoat_sphere", "vertex_colours"]
 ASSIMP_MODELS = {  # name: (folder with every file of the model, model file)
     "ClearCoat": ("ClearCoat-glTF", "ClearCoatTest.gltf"),
     "TextureTransformTest": ("textureTransform", "TextureTransformTest.gltf"),
