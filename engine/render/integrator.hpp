@@ -33,7 +33,7 @@ struct IntegratorConfig {
   LightingMode mode = LightingMode::EnvMap;
   int max_depth = 8;
   bool env_visible = true;  // camera rays that escape see the map (else black)
-  float pixel_spread = 0;   // the camera's ray cone angle per pixel (radians)
+  float pixel_spread = 0;   // a camera ray cone's starting angle (radians; sample_spread)
   bool mipmaps = true;      // texture levels from ray cones (else level 0)
   bool normal_maps = true;
   float texture_anisotropy = kMaxTextureAnisotropy;  // RenderSettings::texture_anisotropy

@@ -5,7 +5,8 @@
 //
 // Why cones rather than ray differentials: a cone is two floats per path and needs no derivatives of
 // the BSDF sampling, and it still widens with distance, obliquity, curvature and roughness, which is
-// what picks the level. The cone starts at the pinhole with the spread angle of one pixel; its width
+// what picks the level. The cone starts at the pinhole with the spread of one sample's share of a pixel
+// (sample_spread); its width
 // at a hit is width + spread * t; there a texture sees the cone's cross-section drawn out on the
 // surface, an ellipse as wide as the cone across the ray and width / |cos| long along it, which the
 // triangle's uv gradients turn into texture coordinates (texture_footprint.hpp filters over it).
@@ -20,6 +21,14 @@
 #include "engine/core/vec3.hpp"
 
 namespace lp::render {
+
+// The spread a camera ray's cone starts with: the pixel's angle shared among its `spp` samples, each
+// of which filters over 1 / sqrt(spp) of it (never less than an eighth), as pbrt-v4 scales its camera
+// ray differentials. The samples already cover the pixel: filtering each over all of it would blur
+// textures, the map and its sun twice.
+inline float sample_spread(float pixel_spread, int spp) {
+  return pixel_spread * std::max(0.125f, 1.0f / std::sqrt(float(std::max(spp, 1))));
+}
 
 // Two perpendicular diameters of the ellipse a cone covers on a surface, in the surface's plane.
 struct SurfaceFootprint {

@@ -100,8 +100,8 @@ struct Renderer::Impl {
                                           : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),
         integrator(geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
-                   {lighting.mode, s.max_depth, lighting.visible, camera.pixel_spread(), s.mipmaps,
-                    s.normal_maps, s.texture_anisotropy}),
+                   {lighting.mode, s.max_depth, lighting.visible, sample_spread(camera.pixel_spread(), s.spp),
+                    s.mipmaps, s.normal_maps, s.texture_anisotropy}),
         film(s.width, s.height),
         tiles_x((s.width + kTileSize - 1) / kTileSize),
         tiles_y((s.height + kTileSize - 1) / kTileSize) {}

@@ -16,7 +16,9 @@ inline std::shared_ptr<const EnvMap> make_map(int width, const std::function<Rgb
   Image image(width, width / 2);
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x)
-      image.set(x, y, f(latlong::direction({(float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(image.height())})));
+      image.set(x, y,
+                f(latlong::direction(
+                    {(float(x) + 0.5f) / float(width), (float(y) + 0.5f) / float(image.height())})));
   return std::make_shared<const EnvMap>(std::move(image));
 }
 
@@ -40,9 +42,11 @@ inline RenderSettings settings(int size, int max_depth = 8, uint64_t seed = 1) {
 }
 
 // One pass of `spp` samples.
-inline Image render(const SceneDesc& scene, const Lighting& l, const RenderSettings& s, std::shared_ptr<const EnvMap> map,
-                    int spp) {
-  Renderer renderer(scene, l, s, std::move(map));
+inline Image render(const SceneDesc& scene, const Lighting& l, const RenderSettings& s,
+                    std::shared_ptr<const EnvMap> map, int spp) {
+  RenderSettings one_pass = s;
+  one_pass.spp = spp;  // the samples the footprints are shared among (sample_spread)
+  Renderer renderer(scene, l, one_pass, std::move(map));
   std::atomic<bool> cancel{false};
   renderer.render_pass(spp, cancel, {});
   return renderer.image();
