@@ -55,14 +55,20 @@ Image render_mipmapped(const SceneDesc& scene, const Lighting& l, bool mipmaps, 
   return test::render(scene, l, s, stripes(stripe_width), spp);
 }
 
-TEST(RenderEnvFootprint, AWideCameraPixelSeesTheMeanOfTheStripes) {
-  // A 90 degree view over 32 pixels: a pixel spans 2.8 degrees, four of the map's 0.7 degree texels.
+// A camera at the origin looking along +x at the map alone.
+SceneDesc map_only(float fov_deg) {
   SceneDesc scene = *scene_preset("furnace");
   scene.objects[0].shape = SphereObject{{0, 0, -50}, 0.1f};  // out of view
   scene.camera.position = {0, 0, 0};
   scene.camera.look_at = {1, 0, 0};
   scene.camera.up = {0, 0, 1};
-  scene.camera.fov_deg = 90;
+  scene.camera.fov_deg = fov_deg;
+  return scene;
+}
+
+TEST(RenderEnvFootprint, AWideCameraPixelSeesTheMeanOfTheStripes) {
+  // A 90 degree view over 32 pixels: a pixel spans 2.8 degrees, four of the map's 0.7 degree texels.
+  const SceneDesc scene = map_only(90);
   const auto all = [](int, int) { return true; };
   const Stats on = stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), true, 32, 1), all);
   const Stats off = stats(render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), false, 32, 1), all);
@@ -78,12 +84,7 @@ TEST(RenderEnvFootprint, ManySamplesShareThePixelAndConvergeToItsBoxFilteredImag
   // filters over an eighth of the pixel, and the image converges to the box-filtered stripes (level 0,
   // read bilinearly, against its texels read alone); a footprint of the whole pixel per sample would blur
   // every pixel across its neighbours a second time.
-  SceneDesc scene = *scene_preset("furnace");
-  scene.objects[0].shape = SphereObject{{0, 0, -50}, 0.1f};  // out of view
-  scene.camera.position = {0, 0, 0};
-  scene.camera.look_at = {1, 0, 0};
-  scene.camera.up = {0, 0, 1};
-  scene.camera.fov_deg = 22.5f;
+  const SceneDesc scene = map_only(22.5f);
   const Image filtered = render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), true, 16, 256, 4);
   const Image sharp = render_mipmapped(scene, coarse_grid(LightingMode::EnvMap), false, 16, 256, 4);
   double sq = 0, sum = 0;
