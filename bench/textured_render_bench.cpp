@@ -55,6 +55,7 @@ void BM_TexturedRender(benchmark::State& state) {
   Lighting lighting;
   RenderSettings settings;
   settings.width = settings.height = kSize;
+  settings.spp = kSpp;
   settings.mipmaps = state.range(1) != 0;
   tbb::task_arena arena(2);
   Renderer renderer(square_scene(int(state.range(0))), lighting, settings, forest());
