@@ -163,6 +163,8 @@ void add_render_ranges(std::vector<Doc>& d) {
     return schema("RenderMaterial", {"oneOf", "type=" + type, "properties", name});
   };
   d.push_back(range_doc(material("dielectric", "ior"), kIor, render::DielectricMaterial{}.ior));
+  d.push_back(
+      range_doc(material("dielectric", "roughness"), kRoughness, render::DielectricMaterial{}.roughness));
   d.push_back(range_doc(material("plastic", "ior"), kIor, render::PlasticMaterial{}.ior));
   d.push_back(range_doc(material("plastic", "roughness"), kRoughness, render::PlasticMaterial{}.roughness));
   d.push_back(

@@ -125,8 +125,10 @@ Material parse_material(const Json* m, const std::string& prefix) {
     return MirrorMaterial{json_rgb(*m, "color", prefix, MirrorMaterial{}.color)};
   }
   if (type == "dielectric") {
-    reject_unknown_fields(*m, {"type", "ior"}, prefix);
-    return DielectricMaterial{json_float(*m, "ior", DielectricMaterial{}.ior, prefix)};
+    reject_unknown_fields(*m, {"type", "ior", "roughness"}, prefix);
+    const DielectricMaterial d;
+    return DielectricMaterial{json_float(*m, "ior", d.ior, prefix),
+                              json_float(*m, "roughness", d.roughness, prefix)};
   }
   if (type == "plastic") {
     reject_unknown_fields(*m, {"type", "albedo", "ior", "roughness"}, prefix);

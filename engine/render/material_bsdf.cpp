@@ -7,6 +7,7 @@
 #include "engine/bsdf/bsdf_diffuse.hpp"
 #include "engine/bsdf/bsdf_mirror.hpp"
 #include "engine/bsdf/bsdf_plastic.hpp"
+#include "engine/bsdf/bsdf_rough_dielectric.hpp"
 
 namespace lp::render {
 namespace {
@@ -22,7 +23,9 @@ struct Factory {
   }
   std::unique_ptr<Bsdf> operator()(const DielectricMaterial& m) const {
     m.validate("material");
-    return std::make_unique<DielectricBsdf>(m.ior);
+    // Index 1 is no interface, whatever its roughness: the smooth boundary lets the light straight on.
+    if (m.roughness < kDeltaLobeAlpha || m.ior == 1) return std::make_unique<DielectricBsdf>(m.ior);
+    return std::make_unique<RoughDielectricBsdf>(m.ior, m.roughness);
   }
   std::unique_ptr<Bsdf> operator()(const PlasticMaterial& m) const {
     m.validate("material");

@@ -28,6 +28,7 @@ struct MirrorMaterial {
 };
 struct DielectricMaterial {
   float ior = 1.5f;
+  float roughness = 0.0f;  // GGX alpha; 0 = smooth glass, above it frosted
   void validate(const std::string& prefix) const;
 };
 struct PlasticMaterial {

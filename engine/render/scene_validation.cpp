@@ -18,6 +18,7 @@ void MirrorMaterial::validate(const std::string& prefix) const {
 
 void DielectricMaterial::validate(const std::string& prefix) const {
   require_in(field_path(prefix, "ior"), ior, kIor);
+  require_in(field_path(prefix, "roughness"), roughness, kRoughness);
 }
 
 void PlasticMaterial::validate(const std::string& prefix) const {

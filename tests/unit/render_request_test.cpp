@@ -72,7 +72,7 @@ TEST(RenderRequest, ParsesEveryObjectMaterialAndSetting) {
         {"type": "mesh", "path": "meshes/bunny.obj",
          "transform": {"translate": [1, 2, 3], "scale": 4, "rotate_deg": [90, 0, 45]},
          "material": {"type": "plastic", "albedo": [0.1, 0.2, 0.3], "ior": 1.6, "roughness": 0.2}},
-        {"type": "sphere", "center": [2, 0, 1], "radius": 1, "material": {"type": "dielectric", "ior": 1.33}},
+        {"type": "sphere", "center": [2, 0, 1], "radius": 1, "material": {"type": "dielectric", "ior": 1.33, "roughness": 0.2}},
         {"type": "sphere", "center": [-2, 0, 1], "radius": 1, "material": {"type": "conductor", "metal": "gold", "roughness": 0.3}},
         {"type": "sphere", "center": [-4, 0, 1], "radius": 1,
          "material": {"type": "conductor", "eta": [0.2, 0.9, 1.1], "k": 3}}
@@ -102,6 +102,7 @@ TEST(RenderRequest, ParsesEveryObjectMaterialAndSetting) {
   EXPECT_EQ(plastic.ior, 1.6f);
   EXPECT_EQ(plastic.roughness, 0.2f);
   EXPECT_EQ(std::get<DielectricMaterial>(o[3].material).ior, 1.33f);
+  EXPECT_EQ(std::get<DielectricMaterial>(o[3].material).roughness, 0.2f);
   const auto& gold = std::get<ConductorMaterial>(o[4].material);
   EXPECT_EQ(gold.eta, lookup_metal("gold").eta_rgb());
   EXPECT_EQ(gold.k, lookup_metal("gold").k_rgb());
@@ -168,6 +169,10 @@ TEST(RenderRequest, BadFieldsAreNamedByTheirPath) {
   expect_field_error(
       head + R"({"type":"sphere","center":[0,0,0],"radius":1,"material":{"type":"dielectric","ior":9}}]}})",
       "scene.objects[1].material.ior");
+  expect_field_error(
+      head +
+          R"({"type":"sphere","center":[0,0,0],"radius":1,"material":{"type":"dielectric","roughness":2}}]}})",
+      "scene.objects[1].material.roughness");
   expect_field_error(head + R"({"type":"sphere","center":[0,0,0],"radius":-1}]}})",
                      "scene.objects[1].radius");
   expect_field_error(head + R"({"type":"sphere","center":[0,0],"radius":1}]}})", "scene.objects[1].center");
