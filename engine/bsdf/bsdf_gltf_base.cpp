@@ -149,7 +149,7 @@ BsdfSample GltfBaseBsdf::weighted(Vec3 wo, Vec3 wi) const {
 // The delta transmissions: straight on through a smooth thin wall, refracted into a thick one.
 std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float probability) const {
   const Rgb tint = transmission_tint(wo.z);
-  if (thin_walled_ || ior_ == 1) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
+  if (thin_walled_) return BsdfSample{-wo, tint / probability, probability, 1.0f, true};
   const std::optional<double> cos_t = transmitted_cos(wo.z, 1.0, ior_);
   if (!cos_t) return std::nullopt;
   const float eta = ior_;
@@ -159,7 +159,6 @@ std::optional<BsdfSample> GltfBaseBsdf::sample_transmission(Vec3 wo, float proba
 
 std::optional<BsdfSample> GltfBaseBsdf::sample_from_inside(Vec3 wo, float u_lobe, Point2 u) const {
   if (interface_) return interface_->sample(wo, u_lobe, u);
-  if (ior_ == 1) return BsdfSample{-wo, {1, 1, 1}, 1.0f, 1.0f, true};
   return DielectricBsdf(ior_).sample(wo, u_lobe, {});
 }
 

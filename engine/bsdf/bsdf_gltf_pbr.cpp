@@ -89,7 +89,7 @@ std::optional<BsdfSample> GltfPbrBsdf::sample(Vec3 wo, float u_lobe, Point2 u) c
     if (!wi) return std::nullopt;
     if (!coat_->mirror()) return weighted(wo, *wi);
     if (wi->z <= 0) return std::nullopt;
-    const float f = coat_->mirror_reflectance(wo) / c.coat;
+    const float f = coat_->albedo(wo) / c.coat;
     return BsdfSample{*wi, {f, f, f}, c.coat, 1.0f, true};
   }
   if (u_lobe < c.coat + c.sheen) return weighted(wo, SheenLobe::sample(u));

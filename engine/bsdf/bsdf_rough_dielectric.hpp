@@ -47,9 +47,6 @@ class RoughDielectricBsdf final : public Bsdf {
   // samples that sample_refraction refuses.
   float refraction_pdf(Vec3 wo, Vec3 wi) const;
 
-  float ior() const { return ior_; }
-  float alpha() const { return ggx_.alpha(); }
-
  private:
   struct Value {
     float f_cos = 0;  // f(wo, wi) |cos wi|

@@ -15,11 +15,6 @@ ClearcoatLobe::ClearcoatLobe(float weight, float roughness, Vec3 normal)
       albedo_(model_coat().single_scattering.row(ggx_.alpha())),
       frame_(Frame::from_normal(normal)) {}
 
-float ClearcoatLobe::mirror_reflectance(Vec3 wo) const {
-  return weight_ *
-         float(fresnel_dielectric(std::min(1.0f, std::abs(dot(wo, frame_.n))), 1.0, kModelDielectricIor));
-}
-
 Rgb ClearcoatLobe::eval(Vec3 wo, Vec3 wi) const {
   if (mirror_) return {};
   const Vec3 o = frame_.to_local(wo), i = frame_.to_local(wi);
@@ -47,8 +42,9 @@ std::optional<Vec3> ClearcoatLobe::sample(Vec3 wo, Point2 u) const {
 }
 
 float ClearcoatLobe::albedo(Vec3 w) const {
-  if (mirror_) return mirror_reflectance(w);
-  return weight_ * albedo_(std::min(1.0f, std::abs(dot(w, frame_.n))));
+  const float mu = std::min(1.0f, std::abs(dot(w, frame_.n)));
+  if (mirror_) return weight_ * float(fresnel_dielectric(mu, 1.0, kModelDielectricIor));
+  return weight_ * albedo_(mu);
 }
 
 }  // namespace lp::render

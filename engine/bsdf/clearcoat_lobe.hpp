@@ -26,9 +26,8 @@ class ClearcoatLobe {
   // A direction of the lobe; for a mirror, wo reflected about the coat's normal.
   std::optional<Vec3> sample(Vec3 wo, Point2 u) const;
   bool mirror() const { return mirror_; }
-  // The mirror's reflectance towards its one direction: weight F(wo.n).
-  float mirror_reflectance(Vec3 wo) const;
-  // weight E_F(mu) for the direction w (either side: a transmitted ray crosses the coat too).
+  // weight E_F(mu) for the direction w (either side: a transmitted ray crosses the coat too); for a
+  // mirror, weight F(mu), which its one direction carries.
   float albedo(Vec3 w) const;
 
  private:
