@@ -70,14 +70,16 @@ TEST(Readiness, NotReadyWhileTheMapsLoadThenReady) {
 }
 
 // The probe a container's HEALTHCHECK runs, `--health-check /api/v1/ready`, finds the port as the server
-// does (here LIGHTPROBE_PORT) and passes only once the server is ready.
+// does (here from --port; tests/container/image_settings.py gives it as LIGHTPROBE_PORT) and passes only
+// once the server is ready.
 TEST(Readiness, TheHealthCheckOfAPathPassesOnlyWhenReady) {
   test::TempDir dir;
   const auto fifo = dir.path() / "slow.pfm";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   test::ServerProcess s({"--load", "slow=" + fifo.string()}, {}, test::StartUntil::Listening);
-  const test::Variables port = {{"LIGHTPROBE_PORT", std::to_string(s.port())}};
-  const auto probe = [&] { return test::run_until_exit({"--health-check", "/api/v1/ready"}, 30s, port); };
+  const auto probe = [&] {
+    return test::run_until_exit({"--health-check", "/api/v1/ready", "--port", std::to_string(s.port())}, 30s);
+  };
 
   const auto loading = probe();
   EXPECT_EQ(loading.exit_status, 1) << loading.output;
