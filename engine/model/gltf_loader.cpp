@@ -14,6 +14,7 @@
 #include "engine/model/gltf_schema.hpp"
 #include "engine/model/gltf_source.hpp"
 #include "engine/model/mesh_part.hpp"
+#include "engine/model/model_memory.hpp"
 #include "engine/model/tinygltf.hpp"
 
 namespace lp::gltf {
@@ -92,6 +93,21 @@ int64_t triangle_count(const tinygltf::Model& model, const tinygltf::Primitive& 
   if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN)
     return std::max<int64_t>(n - 2, 0);
   return n / 3;
+}
+
+// Vertices a primitive of `triangles` triangles makes: its POSITION count, or three per triangle when it
+// has no normals (flat shading).
+int64_t vertex_count(const tinygltf::Model& model, const tinygltf::Primitive& p, int64_t triangles,
+                     const std::string& what) {
+  if (triangles == 0) return 0;
+  if (attribute(p, "NORMAL") < 0) return 3 * triangles;
+  return int64_t(accessor_count(model, attribute(p, "POSITION"), what + " POSITION"));
+}
+
+// The most memory the scene's geometry holds while it loads (the model's positions are reserved for
+// three vertices a triangle).
+int64_t geometry_bytes(int64_t vertices, int64_t triangles) {
+  return geometry_load_bytes(vertices, triangles, true) + 3 * triangles * int64_t(sizeof(Vec3));
 }
 
 // Strips and fans as lists of triangles.
@@ -176,18 +192,22 @@ Model load(std::span<const uint8_t> bytes, const std::string& name, ModelFiles& 
   const tinygltf::Model model = parse(bytes, name, files);
   const SceneNodes nodes = scene_nodes(model);
   const std::vector<MeshInstance>& instances = nodes.meshes;
-  int64_t triangles = 0;
+  int64_t triangles = 0, vertices = 0;
   for (const MeshInstance& instance : instances) {
     const auto& mesh = model.meshes[size_t(instance.mesh)];
     for (size_t i = 0; i < mesh.primitives.size(); ++i) {
-      triangles +=
-          triangle_count(model, mesh.primitives[i], fmt::format("mesh {} primitive {}", instance.mesh, i));
+      const std::string what = fmt::format("mesh {} primitive {}", instance.mesh, i);
+      const int64_t count = triangle_count(model, mesh.primitives[i], what);
+      triangles += count;
+      vertices += vertex_count(model, mesh.primitives[i], count, what);
       if (triangles > limits.max_triangles)
         throw Error(ErrorKind::TooLarge,
                     fmt::format("glTF {} has over {} triangles", name, limits.max_triangles));
     }
   }
   if (triangles == 0) throw Error(ErrorKind::Corrupt, "glTF " + name + " has no triangles in its scene");
+  if (limits.reserve)
+    limits.reserve(geometry_bytes(vertices, triangles), fmt::format("the {} triangles", triangles));
 
   Model out;
   out.materials = read_materials(model, textures);

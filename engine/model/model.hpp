@@ -16,6 +16,7 @@
 #include "engine/core/point2.hpp"
 #include "engine/core/vec3.hpp"
 #include "engine/model/model_files.hpp"
+#include "engine/model/model_memory.hpp"
 #include "engine/texture/texture.hpp"
 #include "engine/texture/texture_transform.hpp"
 #include "engine/texture/wrap_mode.hpp"
@@ -28,6 +29,7 @@ struct ModelLimits {
   int64_t max_file_bytes = limits::kMaxMeshFileBytes;        // the model and every file it refers to
   int64_t max_texture_pixels = limits::kDefaultMaxTexturePixels;
   int64_t max_total_texture_pixels = limits::kDefaultMaxModelTexturePixels;
+  ModelReserve reserve;  // none: memory is not counted
 };
 
 // A texture as a material uses it: the shared texels, the sampler's wrap modes and the texture

@@ -6,13 +6,15 @@
 #include <chrono>
 #include <fstream>
 #include <system_error>
+#include <utility>
 
 #include "engine/core/error.hpp"
 
 namespace lp {
 namespace fs = std::filesystem;
 
-ModelFiles::ModelFiles(fs::path folder, int64_t max_bytes) : max_bytes_(max_bytes) {
+ModelFiles::ModelFiles(fs::path folder, int64_t max_bytes, ModelReserve reserve)
+    : max_bytes_(max_bytes), reserve_(std::move(reserve)) {
   if (!folder.empty()) {
     std::error_code ec;
     folder_ = fs::canonical(folder, ec);
@@ -57,7 +59,13 @@ FileStamp ModelFiles::resolve(const std::string& relative) {
 
 std::vector<uint8_t> ModelFiles::read(const std::string& relative, const std::string& what) {
   const fs::path path = resolve(relative).path;
-  auto bytes = read_file(path, max_bytes_ - bytes_);
+  auto bytes = read_file(path, max_bytes_ - bytes_, reserve_);
+  count(int64_t(bytes.size()), what);
+  return bytes;
+}
+
+std::vector<uint8_t> ModelFiles::read_model(const fs::path& path, const std::string& what) {
+  auto bytes = read_file(path, max_bytes_ - bytes_, reserve_);
   count(int64_t(bytes.size()), what);
   return bytes;
 }
@@ -67,7 +75,8 @@ std::string ModelFiles::cache_key(const std::string& relative) {
   return fmt::format("{}|{}|{}", stamp.path.string(), stamp.size, stamp.modified.time_since_epoch().count());
 }
 
-std::vector<uint8_t> ModelFiles::read_file(const fs::path& path, int64_t max_bytes) {
+std::vector<uint8_t> ModelFiles::read_file(const fs::path& path, int64_t max_bytes,
+                                           const ModelReserve& reserve) {
   const std::string name = path.filename().string();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(ErrorKind::NotFound, "file not found: " + name);
@@ -76,6 +85,7 @@ std::vector<uint8_t> ModelFiles::read_file(const fs::path& path, int64_t max_byt
   if (int64_t(size) > max_bytes)
     throw Error(ErrorKind::TooLarge, fmt::format("{} is over the {} bytes left for the model's files", name,
                                                  std::max<int64_t>(max_bytes, 0)));
+  if (reserve) reserve(file_load_bytes(int64_t(size)), "the file " + name);
   std::ifstream in(path, std::ios::binary);
   std::vector<uint8_t> bytes(size);
   if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/model/model_memory.hpp"
+
 namespace lp {
 
 // A file as it was when a model was about to read it: a file whose stamp differs now has changed since.
@@ -24,8 +26,8 @@ struct FileStamp {
 
 class ModelFiles {
  public:
-  // `folder` empty: a model from memory.
-  ModelFiles(std::filesystem::path folder, int64_t max_bytes);
+  // `folder` empty: a model from memory. `reserve` is told each file's file_load_bytes before it is read.
+  ModelFiles(std::filesystem::path folder, int64_t max_bytes, ModelReserve reserve = {});
 
   // Counts bytes read by other means (the model file itself) against the limit.
   void count(int64_t bytes, const std::string& what);
@@ -37,8 +39,11 @@ class ModelFiles {
   // Every file named through read() or cache_key(), stamped when first named, before it was read.
   const std::vector<FileStamp>& stamps() const { return stamps_; }
 
-  // Reads a whole file (at most `max_bytes`), for the model file itself.
-  static std::vector<uint8_t> read_file(const std::filesystem::path& path, int64_t max_bytes);
+  // Reads the model file itself, whole (at most `max_bytes`), counting it like the others.
+  std::vector<uint8_t> read_model(const std::filesystem::path& path, const std::string& what);
+  // Reads a whole file (at most `max_bytes`). `reserve`, when given, is told its bytes first.
+  static std::vector<uint8_t> read_file(const std::filesystem::path& path, int64_t max_bytes,
+                                        const ModelReserve& reserve = {});
 
  private:
   // The file's path, stamped the first time.
@@ -46,6 +51,7 @@ class ModelFiles {
 
   std::filesystem::path folder_;  // canonical, or empty
   int64_t max_bytes_, bytes_ = 0;
+  ModelReserve reserve_;
   std::vector<FileStamp> stamps_;
 };
 

@@ -35,10 +35,10 @@ Model load_model(const std::filesystem::path& path, const ModelLimits& limits, T
   const std::string format = model_format(path), name = path.filename().string();
   if (format.empty())
     throw Error(ErrorKind::Unsupported, "model " + name + " is not a .gltf, .glb or .obj file");
-  ModelFiles files(path.parent_path().empty() ? "." : path.parent_path(), limits.max_file_bytes);
+  ModelFiles files(path.parent_path().empty() ? "." : path.parent_path(), limits.max_file_bytes,
+                   limits.reserve);
   const std::string model_key = files.cache_key(name);  // stamps the model file before reading it
-  const auto bytes = ModelFiles::read_file(path, limits.max_file_bytes);
-  files.count(int64_t(bytes.size()), name);
+  const auto bytes = files.read_model(path, name);
   TextureCache local;
   ModelTextures textures(files, cache ? *cache : local, limits, model_key);
   Model model;

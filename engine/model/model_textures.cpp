@@ -13,18 +13,25 @@ ModelTextures::ModelTextures(ModelFiles& files, TextureCache& cache, const Model
     : files_(files), cache_(cache), limits_(limits), model_key_(std::move(model_key)) {}
 
 // Both limits are checked once the decoder knows the size and before it allocates, in messages naming
-// the texture (the decoder's own pixel limit is lifted for that).
-ImageLimits ModelTextures::image_limits(const std::string& what) const {
+// the texture (the decoder's own pixel limit is lifted for that); then the memory it will take is
+// reserved.
+ImageLimits ModelTextures::image_limits(std::span<const uint8_t> bytes, const std::string& what) const {
   ImageLimits l;
   l.max_pixels = std::numeric_limits<int64_t>::max();
-  l.before_allocation = [this, what](int64_t width, int64_t height) {
+  l.before_allocation = [this, bytes, what](int64_t width, int64_t height) {
     if (width * height > limits_.max_texture_pixels)
       throw Error(ErrorKind::TooLarge,
                   fmt::format("{} is {} x {} pixels, over the limit of {} pixels per texture", what, width,
                               height, limits_.max_texture_pixels));
     check_total(pixels_ + width * height, what);
+    if (limits_.reserve) limits_.reserve(texture_decode_bytes(bytes, width, height), what);
   };
   return l;
+}
+
+Texture ModelTextures::decode(std::span<const uint8_t> bytes, ColorSpace space,
+                              const std::string& what) const {
+  return decode_texture(bytes, space, image_limits(bytes, what), what);
 }
 
 void ModelTextures::check_total(int64_t pixels, const std::string& what) const {
@@ -45,17 +52,15 @@ std::shared_ptr<const Texture> ModelTextures::counted(std::shared_ptr<const Text
 std::shared_ptr<const Texture> ModelTextures::embedded(int image, std::span<const uint8_t> bytes,
                                                        ColorSpace space, const std::string& what) {
   return counted(cache_.get(fmt::format("{}#image{}", model_key_, image), space,
-                            [&] { return decode_texture(bytes, space, image_limits(what), what); }),
+                            [&] { return decode(bytes, space, what); }),
                  what);
 }
 
 std::shared_ptr<const Texture> ModelTextures::file(const std::string& relative, ColorSpace space,
                                                    const std::string& what) {
-  return counted(
-      cache_.get(
-          files_.cache_key(relative), space,
-          [&] { return decode_texture(files_.read(relative, what), space, image_limits(what), what); }),
-      what);
+  return counted(cache_.get(files_.cache_key(relative), space,
+                            [&] { return decode(files_.read(relative, what), space, what); }),
+                 what);
 }
 
 }  // namespace lp

@@ -26,7 +26,8 @@ class ModelTextures {
 
  private:
   std::shared_ptr<const Texture> counted(std::shared_ptr<const Texture> texture, const std::string& what);
-  ImageLimits image_limits(const std::string& what) const;
+  ImageLimits image_limits(std::span<const uint8_t> bytes, const std::string& what) const;
+  Texture decode(std::span<const uint8_t> bytes, ColorSpace space, const std::string& what) const;
   void check_total(int64_t pixels, const std::string& what) const;
 
   ModelFiles& files_;

@@ -10,6 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/model/mesh_part.hpp"
+#include "engine/model/model_memory.hpp"
 #include "engine/model/obj_prescan.hpp"
 
 namespace lp::obj {
@@ -151,8 +152,12 @@ std::vector<std::string> material_libraries(const std::string& obj) {
 
 Model load(const std::string& obj, const std::string& mtl, const std::string& name, ModelTextures& textures,
            const ModelLimits& limits) {
-  check_obj_text(obj, name, limits.max_triangles);
+  const int64_t triangles = check_obj_text(obj, name, limits.max_triangles);
   check_mtl_text(mtl, name + " materials");
+  if (limits.reserve)
+    limits.reserve(obj_parse_bytes(triangles, int64_t(obj.size() + mtl.size())) +
+                       geometry_load_bytes(3 * triangles, triangles, false),
+                   fmt::format("the {} triangles", triangles));
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

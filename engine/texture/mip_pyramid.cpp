@@ -87,4 +87,14 @@ std::vector<MipLevel> build_mip_pyramid(MipLevel base, int channels) {
   return levels;
 }
 
+int64_t mip_pyramid_bytes(int64_t width, int64_t height, int channels) {
+  int64_t texels = width * height;
+  while (width > 1 || height > 1) {
+    width = std::max<int64_t>(1, width / 2);
+    height = std::max<int64_t>(1, height / 2);
+    texels += width * height;
+  }
+  return texels * channels * int64_t(sizeof(float));
+}
+
 }  // namespace lp

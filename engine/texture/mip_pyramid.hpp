@@ -26,5 +26,7 @@ MipLevel downsample(int width, int height, int channels, const MipRowSource& row
 
 // Level 0 (moved in) and every smaller level down to 1 x 1.
 std::vector<MipLevel> build_mip_pyramid(MipLevel base, int channels);
+// The bytes of the pyramid build_mip_pyramid makes from a width x height level 0.
+int64_t mip_pyramid_bytes(int64_t width, int64_t height, int channels);
 
 }  // namespace lp

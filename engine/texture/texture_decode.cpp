@@ -2,10 +2,17 @@
 
 #include <stb_image.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <memory>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 #include "engine/core/error.hpp"
 #include "engine/image/image_limits.hpp"
@@ -30,20 +37,49 @@ const std::array<float, 256>& srgb_table() {
   return table;
 }
 
+// Returns to the system the whole pages of `buffer` (a malloc'd block) below `end`: they are never read
+// again, and the block is freed later as usual (its allocator's header lies before `buffer`).
+void release_pages(const void* buffer, const void* end) {
+#ifdef __linux__
+  static const auto page = uintptr_t(sysconf(_SC_PAGESIZE));
+  const uintptr_t first = (uintptr_t(buffer) + page - 1) / page * page;
+  const uintptr_t last = uintptr_t(end) / page * page;
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+  (void)buffer;
+  (void)end;
+#endif
+}
+
 // 8- or 16-bit samples to floats: colour channels through the sRGB curve when `space` says so, alpha
-// always linear.
+// always linear. The floats are written a stretch at a time, and the samples' pages already converted
+// are released as they go, so that the two full-size buffers are never resident together.
 template <class Sample>
 std::vector<float> to_float(const Sample* samples, size_t texels, int channels, ColorSpace space) {
   constexpr float kMax = sizeof(Sample) == 1 ? 255.0f : 65535.0f;
-  std::vector<float> out(texels * size_t(channels));
-  for (size_t i = 0; i < out.size(); ++i) {
-    const bool colour = space == ColorSpace::Srgb && int(i % size_t(channels)) < 3;
-    if constexpr (sizeof(Sample) == 1)
-      out[i] = colour ? srgb_table()[samples[i]] : float(samples[i]) / kMax;
-    else
-      out[i] = colour ? srgb_to_linear(float(samples[i]) / kMax) : float(samples[i]) / kMax;
+  constexpr size_t kStretch = size_t{1} << 18;  // samples
+  const size_t count = texels * size_t(channels);
+  std::vector<float> out;
+  out.reserve(count);  // pages not yet resident
+  for (size_t begin = 0; begin < count; begin += kStretch) {
+    const size_t end = std::min(count, begin + kStretch);
+    out.resize(end);
+    for (size_t i = begin; i < end; ++i) {
+      const bool colour = space == ColorSpace::Srgb && int(i % size_t(channels)) < 3;
+      if constexpr (sizeof(Sample) == 1)
+        out[i] = colour ? srgb_table()[samples[i]] : float(samples[i]) / kMax;
+      else
+        out[i] = colour ? srgb_to_linear(float(samples[i]) / kMax) : float(samples[i]) / kMax;
+    }
+    release_pages(samples, samples + end);
   }
   return out;
+}
+
+// Channels of the texture made from a file of `file_channels`: grey and grey-alpha files become
+// RGB(A); alpha is kept only when the file has it.
+int texture_channels(int file_channels) {
+  return (file_channels == 2 || file_channels == 4) ? 4 : 3;
 }
 
 Texture decode_stb(std::span<const uint8_t> bytes, ColorSpace space, const ImageLimits& limits,
@@ -54,8 +90,7 @@ Texture decode_stb(std::span<const uint8_t> bytes, ColorSpace space, const Image
   if (!stbi_info_from_memory(data, length, &width, &height, &file_channels))
     throw Error(ErrorKind::Corrupt, "texture " + name + ": " + stbi_failure_reason());
   check_image_size(width, height, limits);
-  // Grey and grey-alpha files become RGB(A); alpha is kept only when the file has it.
-  const int channels = (file_channels == 2 || file_channels == 4) ? 4 : 3;
+  const int channels = texture_channels(file_channels);
   const size_t texels = size_t(width) * size_t(height);
   const bool sixteen = stbi_is_16_bit_from_memory(data, length);
   std::vector<float> values;
@@ -77,6 +112,19 @@ Texture decode_stb(std::span<const uint8_t> bytes, ColorSpace space, const Image
 }
 
 }  // namespace
+
+int64_t texture_decode_bytes(std::span<const uint8_t> bytes, int64_t width, int64_t height) {
+  const int64_t texels = width * height;
+  if (is_png(bytes) || is_jpeg(bytes)) {
+    int w = 0, h = 0, file_channels = 0;
+    if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &file_channels)) return 0;
+    const int channels = texture_channels(file_channels);
+    const int64_t sample = stbi_is_16_bit_from_memory(bytes.data(), int(bytes.size())) ? 2 : 1;
+    return mip_pyramid_bytes(width, height, channels) + texels * channels * sample;
+  }
+  // The image as read (at most four floats a texel), then the texture.
+  return texels * 4 * int64_t(sizeof(float)) + mip_pyramid_bytes(width, height, 3);
+}
 
 Texture decode_texture(std::span<const uint8_t> bytes, ColorSpace space, const ImageLimits& limits,
                        const std::string& name) {

@@ -26,4 +26,9 @@ constexpr auto enum_entries(ColorSpace) {
 Texture decode_texture(std::span<const uint8_t> bytes, ColorSpace space, const ImageLimits& limits,
                        const std::string& name);
 
+// The most memory decode_texture holds at once for the width x height image in `bytes` (the texture
+// with its mip levels, and the decoder's own buffer), from the file's header; 0 when the header cannot
+// be read (decoding then fails before it allocates).
+int64_t texture_decode_bytes(std::span<const uint8_t> bytes, int64_t width, int64_t height);
+
 }  // namespace lp

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
+#include <vector>
 
 #include "engine/core/error.hpp"
 #include "engine/render/textured_preset.hpp"
@@ -87,6 +89,37 @@ TEST_F(ModelCacheTest, AModelWhoseTextureIsGoneIsAnErrorAndLeavesTheCache) {
     EXPECT_NE(std::string(e.what()).find("albedo.png"), std::string::npos) << e.what();
   }
   EXPECT_EQ(cache_.size(), 0u);
+}
+
+// A 512 x 512 texture takes 4 MiB with its mip levels.
+TEST(ModelCacheBudget, AModelOverTheWholeBudgetIsRefusedNamingItAndReservesNothing) {
+  test::TempDir dir;
+  test::write_textured_quad(dir.path(), test::solid_png(512, 512, kRed));
+  MemoryBudget budget(2 << 20);
+  ModelCache cache(budget);
+  try {
+    cache.get(dir.path() / "quad.obj", {});
+    FAIL() << "the model fit a 2 MiB budget";
+  } catch (const MemoryBudgetError& e) {
+    EXPECT_FALSE(e.transient());
+    EXPECT_NE(std::string(e.what()).find("the model quad.obj"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(budget.used(), 0);
+  EXPECT_EQ(cache.size(), 0u);
+}
+
+TEST(ModelCacheBudget, ALoadedModelKeepsOnlyItsOwnBytesAndRequestsAtOnceShareOneLoad) {
+  test::TempDir dir;
+  test::write_textured_quad(dir.path(), test::solid_png(512, 512, kRed));
+  MemoryBudget budget(64 << 20);
+  ModelCache cache(budget);
+  std::vector<std::future<std::shared_ptr<const Model>>> models;
+  for (int i = 0; i < 4; ++i)
+    models.push_back(std::async(std::launch::async, [&] { return cache.get(dir.path() / "quad.obj", {}); }));
+  const auto first = models[0].get();
+  for (size_t i = 1; i < models.size(); ++i) EXPECT_EQ(models[i].get(), first);
+  EXPECT_EQ(budget.used(MemoryUse::Cache), first->memory_bytes());
+  EXPECT_EQ(budget.used(MemoryUse::Transient), 0);
 }
 
 TEST(ModelCacheBuiltin, APresetModelIsHeldInTheBudgetOnce) {

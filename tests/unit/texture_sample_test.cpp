@@ -114,6 +114,29 @@ TEST(TextureDecode, ColourTexturesAreDecodedFromSrgbAndDataTexturesKeptLinear) {
             3);
 }
 
+// Large enough that the samples are converted in several stretches, each releasing the file's decoded
+// pages behind it: every texel keeps its value.
+TEST(TextureDecode, EveryTexelOfALargeTextureKeepsItsValue) {
+  const int w = 600, h = 300;
+  std::vector<uint8_t> pixels(size_t(w) * h * 4);
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = uint8_t((i * 7 + i / 4093) % 256);
+  const auto png = png_bytes(w, h, 4, pixels);
+  const Texture t = decode_texture(png, ColorSpace::Srgb, {}, "t.png");
+  ASSERT_EQ(t.channels(), 4);
+  size_t wrong = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint8_t* p = &pixels[(size_t(y) * w + size_t(x)) * 4];
+      const Rgba v = t.texel(0, x, y);
+      wrong += v.r != srgb_to_linear(p[0] / 255.0f) || v.b != srgb_to_linear(p[2] / 255.0f) ||
+               v.a != p[3] / 255.0f;
+    }
+  EXPECT_EQ(wrong, 0u);
+  // What decoding may hold at most: the texture as it is kept, and the decoder's 8-bit buffer.
+  EXPECT_EQ(mip_pyramid_bytes(w, h, 4), t.memory_bytes());
+  EXPECT_EQ(texture_decode_bytes(png, w, h), t.memory_bytes() + int64_t(w) * h * 4);
+}
+
 TEST(TextureDecode, FloatFormatsAreLinearInBothSpaces) {
   Image image(2, 1);
   image.set(0, 0, {0.25f, 2.0f, 8.0f});
