@@ -34,6 +34,16 @@ void RenderFiles::save_record(const RenderRecord& record) const {
   if (!removed_) write_record(record);
 }
 
+void RenderFiles::keep_record(const RenderRecord& record) const {
+  if (!store_) return;
+  std::lock_guard lock(mutex_);
+  try {
+    store_->write_record(store_->renders_dir() / (id_ + ".json"), record_json(record));
+  } catch (const StorageError& e) {
+    throw storage_refusal(e, "render " + id_);
+  }
+}
+
 bool RenderFiles::save_image(const Image& image, int spp_done, RenderRecord record) {
   if (!store_) return false;
   const std::string file = fmt::format("{}.{}.exr", id_, spp_done);

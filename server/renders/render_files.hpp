@@ -22,7 +22,10 @@ class RenderFiles {
   bool keeps() const { return store_ != nullptr; }
   std::string image_file() const;
 
-  void save_record(const RenderRecord& record) const;
+  void save_record(const RenderRecord& record) const;  // a failure is logged
+  // The same for a render being accepted: throws api::ApiError 507 insufficient_storage (disk full) or 500
+  // write_failed when the record cannot be written.
+  void keep_record(const RenderRecord& record) const;
   // Writes `image` (the mean of `spp_done` samples per pixel), then `record` naming it, then removes the
   // image kept before. False if nothing is kept (no store, or the files were removed). Throws
   // api::ApiError 507 insufficient_storage (disk full) or 500 write_failed when the image cannot be

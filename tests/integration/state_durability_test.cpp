@@ -137,6 +137,8 @@ TEST(StateDurability, AFullDiskFailsUploadsWith507AndKeepsNothing) {
   for (const std::string name : {"sky1", "sky2", "sky3"})
     expect_storage_full(s.upload_map(name), name, state);
   expect_storage_full(s.upload_asset("car"), "car", state);
+  expect_storage_full(s.render("kept", 8), "render", state);
+  EXPECT_EQ(s.get("/api/v1/renders").body_json()["renders"].size(), 0u);
   EXPECT_EQ(s.listed("envmaps", "name"), (std::set<std::string>{"default", "kept"}));
   EXPECT_EQ(s.listed("assets", "name"), (std::set<std::string>{"box"}));
 
@@ -147,6 +149,7 @@ TEST(StateDurability, AFullDiskFailsUploadsWith507AndKeepsNothing) {
   EXPECT_EQ(s.files_in("maps"), (std::set<std::string>{"kept.json", "kept.pfm"}));
   EXPECT_EQ(s.files_in("assets"), (std::set<std::string>{"box.json"}));
   EXPECT_EQ(s.files_in("asset-files"), (std::set<std::string>{"box"}));
+  EXPECT_TRUE(s.files_in("renders").empty());
   EXPECT_EQ(s.upload_map("sky1").status, 201);
 }
 
