@@ -7,12 +7,12 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <cstring>
 #include <stdexcept>
 
 #include "api/api_error.hpp"
 #include "engine/model/model_loader.hpp"
 #include "server/storage/atomic_file.hpp"
+#include "server/storage/storage_error.hpp"
 
 namespace lp::server {
 namespace {
@@ -106,8 +106,7 @@ std::string find_model_file(const std::vector<UnpackedFile>& files) {
 
 StagedAsset::StagedAsset(std::span<const uint8_t> upload, fs::path target, const ArchiveLimits& limits)
     : target_(std::move(target)), staging_(temporary_path_for(target_)) {
-  if (!fs::create_directory(staging_))
-    throw std::runtime_error("cannot create the folder " + staging_.string() + ": it exists");
+  if (!fs::create_directory(staging_)) throw StorageError("create a folder", staging_, EEXIST);
   try {
     if (is_glb(upload))
       files_ = write_model(upload, staging_, kGlbFileName);
@@ -137,8 +136,7 @@ void StagedAsset::commit() {
                           "the state directory holds files of an earlier asset named '" +
                               target_.filename().string() +
                               "' that could not be restored (see the server's log)");
-    throw std::runtime_error("cannot rename " + staging_.string() + " to " + target_.string() + ": " +
-                             std::strerror(errno));
+    throw StorageError("rename a folder", staging_, errno);
   }
   committed_ = true;
   sync_directory(target_.parent_path());

@@ -38,7 +38,8 @@ std::string find_model_file(const std::vector<UnpackedFile>& files);
 class StagedAsset {
  public:
   // Writes `upload` (a .glb or .gltf, or an archive to unpack under `limits`) for the folder `target`. Throws
-  // api::ApiError for an upload refused, std::runtime_error for an I/O failure.
+  // api::ApiError for an upload refused, StorageError or std::filesystem::filesystem_error for an I/O
+  // failure.
   StagedAsset(std::span<const uint8_t> upload, std::filesystem::path target, const ArchiveLimits& limits);
   ~StagedAsset();
   StagedAsset(const StagedAsset&) = delete;

@@ -16,7 +16,13 @@ std::filesystem::path resolve_mesh_path(const App& app, const std::string& path,
   if (!asset || !app.state)
     throw api::invalid_field(field, "no asset named '" + api::excerpt(name) + "' (see GET /api/v1/assets)");
   const std::string inside = slash == std::string::npos ? asset->model : rest.substr(slash + 1);
-  return resolve_inside(asset_folder(*app.state, name), inside, field, "the asset '" + name + "'");
+  try {
+    return resolve_inside(asset_folder(*app.state, name), inside, field, "the asset '" + name + "'");
+  } catch (const api::ApiError&) {
+    if (app.assets.find(name) == asset) throw;
+    throw api::ApiError(api::ErrorCode::Conflict,
+                        "the asset '" + api::excerpt(name) + "' was deleted while the render was accepted");
+  }
 }
 
 }  // namespace lp::server

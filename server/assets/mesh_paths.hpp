@@ -9,7 +9,8 @@
 namespace lp::server {
 
 // The file a mesh path names. Throws ApiError 400 naming `field` for an unknown asset, a path that
-// leaves the asset's folder or the data directory (resolve_in_data_dir), or no such file.
+// leaves the asset's folder or the data directory (resolve_in_data_dir), or no such file; 409 conflict
+// when the asset is deleted while its path resolves.
 std::filesystem::path resolve_mesh_path(const App& app, const std::string& path, const std::string& field);
 
 }  // namespace lp::server

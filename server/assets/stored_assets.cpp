@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <optional>
+
 #include "api/api_error.hpp"
 #include "api/model_info_schema.hpp"
 #include "api/render_request.hpp"
@@ -10,6 +12,7 @@
 #include "server/assets/asset_folder.hpp"
 #include "server/storage/data_dir.hpp"
 #include "server/storage/resource_name.hpp"
+#include "server/storage/storage_error.hpp"
 
 namespace lp::server {
 namespace {
@@ -18,6 +21,8 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::system_clock;
 
 constexpr int kRecordVersion = 1;
+
+struct MissingFolder {};  // a record whose files are gone
 
 fs::path record_path(const StateStore& store, const std::string& name) {
   return store.assets_dir() / (name + ".json");
@@ -62,19 +67,33 @@ api::AssetInfo restored_info(const StateStore& store, const nlohmann::json& reco
   if (!valid_resource_name(info.name)) throw std::invalid_argument("not an asset name: '" + info.name + "'");
   if (!is_model_file_name(info.model)) throw std::invalid_argument("not a model file: '" + info.model + "'");
   const fs::path folder = asset_folder(store, info.name);
-  if (!fs::is_directory(fs::symlink_status(folder))) throw std::invalid_argument("its folder is missing");
+  if (!fs::is_directory(fs::symlink_status(folder))) throw MissingFolder();
   resolve_inside(folder, info.model, "model", "the asset's folder");
   return info;
 }
 
-// Folders of assets/ that no record names: an upload a crash cut short after its rename.
-void remove_unrecorded_folders(const StateStore& store) {
+// State directories written before records and files lived apart kept an asset's folder beside its
+// record, in assets/: moves such folders to asset-files/.
+void move_folders_beside_records(const StateStore& store) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(store.assets_dir(), ec)) {
-    if (!entry.is_directory() || fs::exists(record_path(store, entry.path().filename().string()))) continue;
-    spdlog::warn("state: removing {} (no record names it)", entry.path().string());
-    fs::remove_all(entry.path(), ec);
+    const fs::path target = store.asset_files_dir() / entry.path().filename();
+    if (!entry.is_directory() || fs::exists(target)) continue;
+    spdlog::info("state: moving {} to {}", fs::relative(entry.path(), store.dir()).string(),
+                 fs::relative(target, store.dir()).string());
+    fs::rename(entry.path(), target, ec);
   }
+}
+
+// What no record names: folders an upload a crash cut short after its rename left, and anything in
+// assets/ but records.
+void remove_unrecorded_files(const StateStore& store) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(store.asset_files_dir(), ec))
+    if (!fs::exists(record_path(store, entry.path().filename().string())))
+      store.remove_leftover(entry.path());
+  for (const auto& entry : fs::directory_iterator(store.assets_dir(), ec))
+    if (entry.path().extension() != ".json" || !entry.is_regular_file()) store.remove_leftover(entry.path());
 }
 
 // Loads the model file as a render loads it, into the model cache where the first render finds it,
@@ -100,7 +119,7 @@ void write_record(StateStore& store, const api::AssetInfo& info) {
 }  // namespace
 
 fs::path asset_folder(const StateStore& store, const std::string& name) {
-  return store.assets_dir() / name;
+  return store.asset_files_dir() / name;
 }
 
 std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& name,
@@ -114,19 +133,29 @@ std::shared_ptr<const api::AssetInfo> store_asset(App& app, const std::string& n
       app.memory.reserve(int64_t(upload.size()), MemoryUse::Transient, "unpacking the asset '" + name + "'");
   const ArchiveLimits limits = app.options.assets.archive();
   const fs::path folder = asset_folder(store, name);
-  StagedAsset staged(upload, folder, limits);
-  api::AssetInfo info{name, staged.files().model, staged.files().bytes, staged.files().files, Clock::now(),
-                      {}};
-  {
+  const std::string what = "the asset '" + name + "'";
+  std::optional<StagedAsset> staged;
+  try {
+    staged.emplace(upload, folder, limits);
     std::lock_guard lock(store.assets_mutex());
-    staged.commit();
+    staged->commit();
+  } catch (const StorageError& e) {
+    throw storage_refusal(e, what);
+  } catch (const fs::filesystem_error& e) {
+    throw storage_refusal(e, what);
   }
+  api::AssetInfo info{name, staged->files().model, staged->files().bytes, staged->files().files, Clock::now(),
+                      {}};
   // The model is loaded from its place, as a render names it; until the record is written the folder is
   // a leftover that a restart removes, and the held name keeps renders and deletes away from it.
   try {
     info.description =
         describe_stored_model(app, resolve_inside(folder, info.model, "model", "the asset's folder"));
-    write_record(store, info);
+    try {
+      write_record(store, info);
+    } catch (const StorageError& e) {
+      throw storage_refusal(e, what);
+    }
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(folder, ignored);
@@ -149,19 +178,24 @@ bool remove_asset(App& app, const std::string& name) {
 
 void restore_assets(App& app) {
   const StateStore& store = *app.state;
+  move_folders_beside_records(store);
   int restored = 0;
   for (const auto& [path, record] : store.read_records(store.assets_dir())) {
     try {
-      const api::AssetInfo info = restored_info(store, record);
-      if (path.filename() != info.name + ".json")
+      if (path.filename() != record.value("name", "") + ".json")
         throw std::invalid_argument("the file name is not the asset's");
+      const api::AssetInfo info = restored_info(store, record);
       app.assets.hold(info.name)->add(info);
       ++restored;
+    } catch (const MissingFolder&) {
+      spdlog::warn("state: dropping {}: the asset's files are missing",
+                   fs::relative(path, store.dir()).string());
+      store.remove(path);
     } catch (const std::exception& e) {
       spdlog::warn("state: skipping asset {}: {}", path.string(), e.what());
     }
   }
-  remove_unrecorded_folders(store);
+  remove_unrecorded_files(store);
   spdlog::info("state: {} asset(s) restored", restored);
 }
 

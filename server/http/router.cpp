@@ -45,8 +45,10 @@ Handler guarded(Handler handler) {
       spdlog::error("{} {} (request {}): out of memory", req.method, req.path, current_request().id);
       send_error(res, api::ErrorCode::InsufficientStorage, "the server ran out of memory for this request");
     } catch (const std::exception& e) {
+      // Its message may name server paths: it goes to the log, the client gets the request id.
       spdlog::error("{} {} (request {}): {}", req.method, req.path, current_request().id, e.what());
-      send_error(res, api::ErrorCode::Internal, e.what());
+      send_error(res, api::ErrorCode::Internal,
+                 "internal error; the server's log has it under request " + current_request().id);
     }
   };
 }

@@ -4,6 +4,7 @@
 #include <ctime>
 #include <exception>
 
+#include "api/api_error.hpp"
 #include "engine/core/error.hpp"
 
 namespace lp::server {
@@ -134,6 +135,8 @@ void Job::execute() {
            std::nullopt);
   } catch (const Error& e) {
     failed(api::error_code_for(e.kind()), e.what());
+  } catch (const api::ApiError& e) {
+    failed(e.code(), e.what());
   } catch (const std::exception& e) {
     failed(api::ErrorCode::Internal, e.what());
   } catch (...) {

@@ -2,14 +2,19 @@
 
 #include <spdlog/spdlog.h>
 
+#include <set>
+
 #include "server/maps/envmap_loading.hpp"
 #include "server/storage/data_dir.hpp"
 #include "server/storage/resource_name.hpp"
+#include "server/storage/storage_error.hpp"
 
 namespace lp::server {
 namespace {
 
 namespace fs = std::filesystem;
+
+struct MissingFile {};  // a record whose uploaded file is gone
 
 constexpr int kRecordVersion = 1;
 constexpr std::string_view kPathSource = "path:";
@@ -30,6 +35,14 @@ Projection record_projection(const nlohmann::json& record) {
   return *projection;
 }
 
+// A file no record names (an upload a crash cut short before its record, or a delete left): neither a
+// record, nor named by one, nor the file of a record that could not be read (kept for the operator).
+bool is_leftover(const fs::path& file, const std::set<std::string>& named) {
+  if (file.extension() == ".json" || named.contains(file.filename().string())) return false;
+  std::error_code ec;
+  return !fs::exists(file.parent_path() / (file.stem().string() + ".json"), ec);
+}
+
 void restore_map(App& app, const nlohmann::json& record) {
   if (record.at("version").get<int>() != kRecordVersion)
     throw std::invalid_argument("unknown record version");
@@ -43,6 +56,7 @@ void restore_map(App& app, const nlohmann::json& record) {
   } else {
     if (file != upload_file_name(name, record.at("format").get<std::string>()))
       throw std::invalid_argument("the file name is not the map's");
+    if (!fs::exists(app.state->maps_dir() / file)) throw MissingFile();
     register_envmap_file(app, name, app.state->maps_dir() / file, source, kDefaultInvalidPixelPolicy,
                          record_projection(record));
   }
@@ -66,7 +80,9 @@ void keep_map(App& app, const std::shared_ptr<const EnvMapEntry>& entry, std::sp
                         {"file", file},
                         {"projection", enum_name(entry->source_projection)}});
   } catch (const std::exception& e) {
-    spdlog::error("map '{}' is loaded but will not survive a restart: {}", entry->name, e.what());
+    app.envmaps.remove(entry->id);
+    if (!file.empty()) store.remove(store.maps_dir() / file);
+    throw storage_refusal(e, "the map '" + entry->name + "'");
   }
 }
 
@@ -83,15 +99,24 @@ bool remove_map(App& app, const std::string& id) {
 }
 
 void restore_maps(App& app) {
+  const StateStore& store = *app.state;
   int restored = 0;
-  for (const auto& [path, record] : app.state->read_records(app.state->maps_dir())) {
+  std::set<std::string> named;  // files of the records kept
+  for (const auto& [path, record] : store.read_records(store.maps_dir())) {
     try {
+      named.insert(record.value("file", ""));
       restore_map(app, record);
       ++restored;
+    } catch (const MissingFile&) {
+      spdlog::warn("state: dropping {}: the map's file is missing", fs::relative(path, store.dir()).string());
+      store.remove(path);
     } catch (const std::exception& e) {
       spdlog::warn("state: skipping map {}: {}", path.string(), e.what());
     }
   }
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(store.maps_dir(), ec))
+    if (is_leftover(entry.path(), named)) store.remove_leftover(entry.path());
   spdlog::info("state: {} map(s) restored", restored);
 }
 

@@ -14,7 +14,7 @@ QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest requ
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), std::move(envmap),
                                          std::move(image), std::move(context));
   QueuedRender queued{job, job->status_json()};
-  job->save_record();
+  job->keep_record();
   if (app.renders.submit(job)) return queued;
   if (!replaced)
     job->delete_state();

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "engine/image/image_io.hpp"
+#include "server/storage/storage_error.hpp"
 
 namespace lp::server {
 
@@ -21,7 +22,9 @@ void RenderFiles::write_record(const RenderRecord& record) const {
   try {
     store_->write_record(store_->renders_dir() / (id_ + ".json"), record_json(record));
   } catch (const std::exception& e) {
-    spdlog::error("render {}: cannot save its record: {}", id_, e.what());
+    const auto* s = dynamic_cast<const StorageError*>(&e);
+    spdlog::error("render {}: cannot save its record: {}{}", id_, e.what(),
+                  s ? " (" + s->path().string() + ")" : "");
   }
 }
 
@@ -29,6 +32,16 @@ void RenderFiles::save_record(const RenderRecord& record) const {
   if (!store_) return;
   std::lock_guard lock(mutex_);
   if (!removed_) write_record(record);
+}
+
+void RenderFiles::keep_record(const RenderRecord& record) const {
+  if (!store_) return;
+  std::lock_guard lock(mutex_);
+  try {
+    store_->write_record(store_->renders_dir() / (id_ + ".json"), record_json(record));
+  } catch (const StorageError& e) {
+    throw storage_refusal(e, "render " + id_);
+  }
 }
 
 bool RenderFiles::save_image(const Image& image, int spp_done, RenderRecord record) {
@@ -39,9 +52,8 @@ bool RenderFiles::save_image(const Image& image, int spp_done, RenderRecord reco
   if (removed_) return false;
   try {
     store_->write_bytes(store_->renders_dir() / file, bytes);
-  } catch (const std::exception& e) {
-    spdlog::error("render {}: cannot save its image: {}", id_, e.what());
-    return false;
+  } catch (const StorageError& e) {
+    throw storage_refusal(e, "the image of render " + id_);
   }
   const std::string previous = std::exchange(image_file_, file);
   record.image_file = file;

@@ -1,7 +1,8 @@
 #pragma once
 // A render's files in the state directory (storage/state_store.hpp): its record, renders/ID.json, and the
 // mean image of its finished passes, renders/ID.SPP.exr. One write at a time, and none once the files are
-// deleted. A write that fails is logged: the render goes on with what was kept before.
+// deleted. An image that cannot be written fails the render (its result could not be kept); a record
+// that cannot be written is logged.
 #include <memory>
 #include <mutex>
 #include <string>
@@ -21,9 +22,14 @@ class RenderFiles {
   bool keeps() const { return store_ != nullptr; }
   std::string image_file() const;
 
-  void save_record(const RenderRecord& record) const;
+  void save_record(const RenderRecord& record) const;  // a failure is logged
+  // The same for a render being accepted: throws api::ApiError 507 insufficient_storage (disk full) or 500
+  // write_failed when the record cannot be written.
+  void keep_record(const RenderRecord& record) const;
   // Writes `image` (the mean of `spp_done` samples per pixel), then `record` naming it, then removes the
-  // image kept before. False if the image could not be written (then nothing changes).
+  // image kept before. False if nothing is kept (no store, or the files were removed). Throws
+  // api::ApiError 507 insufficient_storage (disk full) or 500 write_failed when the image cannot be
+  // written (then nothing changes).
   bool save_image(const Image& image, int spp_done, RenderRecord record);
   // Removes the record and the image, for good.
   void remove();

@@ -52,6 +52,7 @@ class RenderJob : public Job {
   int64_t retained_bytes() const override;
 
   void save_record() const { files_.save_record(record()); }  // to the store (a failure is logged)
+  void keep_record() const { files_.keep_record(record()); }  // the same, throwing (RenderFiles::keep_record)
   void delete_state() { files_.remove(); }                    // the record and the image, for good
 
  protected:

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 
 #include "api/api_error.hpp"
@@ -12,6 +13,10 @@
 
 namespace lp::server {
 namespace {
+
+namespace fs = std::filesystem;
+
+struct MissingImage {};  // a finished render's record whose image is gone
 
 std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   const auto request = api::parse_render_request(record.request, app.options.limits);
@@ -24,8 +29,11 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   auto image = RenderFiles::read_image(*app.state, record, request);
   if (!image) {
     memory = {};
-    if (status != JobStatus::Interrupted && record.spp_done > 0)
+    if (status != JobStatus::Interrupted && record.spp_done > 0) {
+      std::error_code ec;
+      if (!fs::exists(app.state->renders_dir() / record.image_file, ec)) throw MissingImage();
       throw std::runtime_error("its image is unusable");
+    }
     record.spp_done = 0;  // an interrupted render without a usable image starts over
     record.image_file.clear();
   }
@@ -33,6 +41,29 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
                                          RenderJobContext{app.state.get(), nullptr, std::move(memory), {}});
   job->restore_ended(status, job->error());
   return job;
+}
+
+// The id a file of the renders folder belongs to: "ID.json", "ID.SPP.exr".
+std::string render_id_of(const fs::path& file) {
+  const std::string name = file.filename().string();
+  return name.substr(0, name.find('.'));
+}
+
+// Removes the files no record names: images whose record is gone (deleted while a checkpoint wrote), or
+// that a newer image replaced. The files of a record that could not be read are kept for the operator.
+void remove_unrecorded_files(const StateStore& store, const std::vector<RenderRecord>& records) {
+  std::set<std::string> ids, named;
+  for (const auto& r : records) {
+    ids.insert(r.id);
+    named.insert(r.image_file);
+  }
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(store.renders_dir(), ec)) {
+    const fs::path& path = entry.path();
+    if (path.extension() == ".json" || named.contains(path.filename().string())) continue;
+    const std::string id = render_id_of(path);
+    if (ids.contains(id) || !fs::exists(store.renders_dir() / (id + ".json"))) store.remove_leftover(path);
+  }
 }
 
 api::ApiError cannot_resume(const RenderJob& job, api::ErrorCode code, const std::string& why) {
@@ -54,6 +85,7 @@ void restore_renders(App& app) {
   }
   std::stable_sort(records.begin(), records.end(),
                    [](const auto& a, const auto& b) { return a.created < b.created; });
+  remove_unrecorded_files(*app.state, records);
   std::vector<std::shared_ptr<RenderJob>> interrupted;
   size_t restored = 0;
   for (auto& record : records) {
@@ -66,6 +98,9 @@ void restore_renders(App& app) {
       }
       app.renders.restore(job);
       ++restored;
+    } catch (const MissingImage&) {
+      spdlog::warn("state: dropping renders/{}.json: its image is missing", id);
+      app.state->remove(app.state->renders_dir() / (id + ".json"));
     } catch (const std::exception& e) {
       spdlog::warn("state: skipping render {}: {}", id, e.what());
     }

@@ -11,7 +11,8 @@
 namespace lp::server {
 
 // Restores every readable record, oldest first, within the finished-job limits; a record that cannot
-// be used is skipped with a warning. With --resume-interrupted, resumes the interrupted ones.
+// be used is skipped with a warning, a finished render's record whose image is missing is dropped, and
+// images no record names are removed (both logged). With --resume-interrupted, resumes the interrupted ones.
 void restore_renders(App& app);
 
 // Queues a continuation of an interrupted render, which replaces it under the same id; no job if the

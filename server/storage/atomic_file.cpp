@@ -5,9 +5,10 @@
 
 #include <atomic>
 #include <cerrno>
-#include <cstring>
-#include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "server/storage/storage_error.hpp"
 
 namespace lp::server {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const std::string& what, const fs::path& path) {
-  throw std::runtime_error("cannot " + what + " " + path.string() + ": " + std::strerror(errno));
+  throw StorageError(what, path, errno);
 }
 
 }  // namespace
@@ -41,14 +42,13 @@ void NewFile::write(std::span<const uint8_t> bytes) {
 
 void NewFile::finish() {
   if (::fsync(fd_) != 0) fail("flush", path_);
-  const int fd = fd_;
-  fd_ = -1;
+  const int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) fail("close", path_);
 }
 
 fs::path temporary_path_for(const fs::path& path) {
   static std::atomic<uint64_t> counter{0};
-  return path.parent_path() / (path.filename().string() + std::string(kTempFileMarker) +
+  return path.parent_path() / (std::string(kTempFilePrefix) + path.filename().string() + "-" +
                                std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1)));
 }
 
@@ -66,7 +66,7 @@ void write_file_atomically(const fs::path& path, std::span<const uint8_t> bytes)
     NewFile file(temp);
     file.write(bytes);
     file.finish();
-    if (::rename(temp.c_str(), path.c_str()) != 0) fail("rename to", path);
+    if (::rename(temp.c_str(), path.c_str()) != 0) fail("rename", path);
   } catch (...) {
     std::error_code ignored;
     fs::remove(temp, ignored);

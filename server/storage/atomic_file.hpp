@@ -9,22 +9,23 @@
 
 namespace lp::server {
 
-// Throws std::runtime_error naming the path and the system error.
+// Throw StorageError (storage_error.hpp) naming the system error.
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 void write_file_atomically(const std::filesystem::path& path, std::string_view text);
 
-// Temporary files of writes that a crash cut short carry this marker in their name.
-inline constexpr std::string_view kTempFileMarker = ".tmp-";
+// Temporary files and folders start with this prefix, which no resource name (resource_name.hpp) and no
+// render id can start with, so that the start-up sweep of writes a crash cut short matches only them.
+inline constexpr std::string_view kTempFilePrefix = ".tmp-";
 
-// A fresh name beside `path`, carrying kTempFileMarker, for a file or folder written before it is renamed
-// to `path`.
+// A fresh name beside `path`, starting with kTempFilePrefix, for a file or folder written before it is
+// renamed to `path`.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 
 // Flushes a folder's entries (files created, renamed or removed in it) to disk. Throws like the writes.
 void sync_directory(const std::filesystem::path& dir);
 
 // A file that must not exist yet (nor be a link), written in pieces and flushed to disk by finish().
-// Every member throws std::runtime_error naming the path and the system error.
+// Every member throws StorageError.
 class NewFile {
  public:
   explicit NewFile(std::filesystem::path path);

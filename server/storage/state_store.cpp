@@ -29,11 +29,11 @@ int lock_directory(const fs::path& dir) {
   return fd;
 }
 
-// Files and folders (an asset's, staged) of writes a crash cut short.
+// Files and folders (an asset's, staged) of writes a crash cut short: only the names the server writes.
 void remove_temp_files(const fs::path& folder) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec))
-    if (entry.path().filename().string().find(kTempFileMarker) != std::string::npos) {
+    if (entry.path().filename().string().starts_with(kTempFilePrefix)) {
       spdlog::warn("state: removing {} (a write cut short)", entry.path().string());
       fs::remove_all(entry.path(), ec);
     }
@@ -43,7 +43,7 @@ void remove_temp_files(const fs::path& folder) {
 
 StateStore::StateStore(fs::path dir) : dir_(std::move(dir)) {
   std::error_code ec;
-  for (const auto& folder : {dir_, maps_dir(), renders_dir(), assets_dir()}) {
+  for (const auto& folder : {dir_, maps_dir(), renders_dir(), assets_dir(), asset_files_dir()}) {
     fs::create_directories(folder, ec);
     if (!fs::is_directory(folder))
       throw std::runtime_error("cannot create the state directory " + folder.string() +
@@ -53,6 +53,7 @@ StateStore::StateStore(fs::path dir) : dir_(std::move(dir)) {
   remove_temp_files(maps_dir());
   remove_temp_files(renders_dir());
   remove_temp_files(assets_dir());
+  remove_temp_files(asset_files_dir());
 }
 
 StateStore::~StateStore() {
@@ -84,6 +85,13 @@ void StateStore::write_record(const fs::path& path, const nlohmann::json& record
 
 void StateStore::write_bytes(const fs::path& path, std::span<const uint8_t> bytes) const {
   write_file_atomically(path, bytes);
+}
+
+void StateStore::remove_leftover(const fs::path& path) const {
+  spdlog::warn("state: removing {} (no record names it)", fs::relative(path, dir_).string());
+  std::error_code ec;
+  fs::remove_all(path, ec);
+  if (ec) spdlog::warn("state: cannot remove {}: {}", path.string(), ec.message());
 }
 
 void StateStore::remove(const fs::path& path) const {

@@ -74,6 +74,7 @@ class AssetServer {
   }
   json finished_render(const std::string& id) const { return test::finished_render(*client_, id); }
   fs::path assets_dir() const { return state_.path() / "assets"; }
+  fs::path files_dir() const { return state_.path() / "asset-files"; }
   const fs::path& state_dir() const { return state_.path(); }
   void stop() {
     client_.reset();
@@ -115,7 +116,7 @@ TEST(AssetApi, AZippedModelIsStoredListedDescribedAndDeleted) {
   EXPECT_EQ(asset["files"], 3);
   EXPECT_EQ(asset["bytes"], kObj.size() + kMtl.size() + kPng.size());
   EXPECT_EQ(asset["path"], "assets/grid");
-  EXPECT_EQ(read_text(s.assets_dir() / "grid" / "grid" / "textures" / "albedo.png"), kPng);
+  EXPECT_EQ(read_text(s.files_dir() / "grid" / "grid" / "textures" / "albedo.png"), kPng);
 
   EXPECT_EQ(s.get("/api/v1/assets/grid").body_json(), asset);
   EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", {asset}}}));
@@ -125,6 +126,7 @@ TEST(AssetApi, AZippedModelIsStoredListedDescribedAndDeleted) {
   EXPECT_EQ(s.del("/api/v1/assets/grid").status, 404);
   EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", json::array()}}));
   EXPECT_TRUE(names_in(s.assets_dir()).empty());
+  EXPECT_TRUE(names_in(s.files_dir()).empty());
 }
 
 TEST(AssetApi, TarAndGzipTarWithTheModelAtTheTopLevel) {
@@ -137,7 +139,7 @@ TEST(AssetApi, TarAndGzipTarWithTheModelAtTheTopLevel) {
     ASSERT_EQ(r.status, 201) << name << ": " << r.body;
     EXPECT_EQ(r.body_json()["model"], "grid.obj");
     EXPECT_EQ(r.body_json()["files"], 3);
-    EXPECT_EQ(read_text(s.assets_dir() / name / "grid.obj"), kObj);
+    EXPECT_EQ(read_text(s.files_dir() / name / "grid.obj"), kObj);
   }
   EXPECT_EQ(s.get("/api/v1/assets").body_json()["assets"].size(), 2u);
 }
@@ -151,7 +153,7 @@ TEST(AssetApi, AGlbIsKeptAsUploaded) {
   EXPECT_EQ(r.body_json()["format"], "glb");
   EXPECT_EQ(r.body_json()["files"], 1);
   EXPECT_EQ(r.body_json()["bytes"], glb.size());
-  EXPECT_EQ(read_text(s.assets_dir() / "box.v2" / "model.glb"), glb);
+  EXPECT_EQ(read_text(s.files_dir() / "box.v2" / "model.glb"), glb);
 }
 
 TEST(AssetApi, AssetsAreReloadedAtStartAndLeftoversRemoved) {
@@ -161,11 +163,12 @@ TEST(AssetApi, AssetsAreReloadedAtStartAndLeftoversRemoved) {
   const json glb = s.upload("box", kGlb).body_json();
   s.stop();
   // What a crash can leave: an unpacked folder renamed into place before its record, and a staged one.
-  fs::create_directories(s.assets_dir() / "orphan" / "sub");
-  fs::create_directories(s.assets_dir() / "late.tmp-1-0" / "sub");
+  fs::create_directories(s.files_dir() / "orphan" / "sub");
+  fs::create_directories(s.files_dir() / ".tmp-late-1-0" / "sub");
   s.restart();
   EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", {glb, zipped}}}));
-  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json", "grid", "grid.json"}));
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box.json", "grid.json"}));
+  EXPECT_EQ(names_in(s.files_dir()), (std::set<std::string>{"box", "grid"}));
   const Reply render = s.render("assets/grid");
   ASSERT_EQ(render.status, 202) << render.body;
   EXPECT_EQ(s.finished_render(render.body_json()["id"])["status"], "done");
@@ -181,11 +184,13 @@ TEST(AssetApi, AnAssetThatCannotBeRestoredKeepsItsFilesAndName) {
   std::ofstream(s.assets_dir() / "box.json") << record.dump();
   s.restart();
   EXPECT_EQ(s.get("/api/v1/assets").body_json(), json({{"assets", json::array()}}));
-  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box.json"}));
+  EXPECT_EQ(names_in(s.files_dir()), (std::set<std::string>{"box"}));
   const Reply r = s.upload("box", kGlb);
   EXPECT_EQ(r.status, 409) << r.body;
   EXPECT_NE(r.body.find("could not be restored"), std::string::npos) << r.body;
-  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box", "box.json"}));
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"box.json"}));
+  EXPECT_EQ(names_in(s.files_dir()), (std::set<std::string>{"box"}));
 }
 
 TEST(AssetApi, AnUploadedObjRendersToDone) {
@@ -300,7 +305,8 @@ TEST(AssetApi, RefusedUploadsAnswerTheirStatusAndCodeAndLeaveNoFiles) {
     EXPECT_EQ(r.body_json()["error"]["code"], refusal.code) << refusal.label << ": " << r.body;
     EXPECT_NE(r.body.find(refusal.message), std::string::npos) << refusal.label << ": " << r.body;
   }
-  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"taken", "taken.json"}));
+  EXPECT_EQ(names_in(s.assets_dir()), (std::set<std::string>{"taken.json"}));
+  EXPECT_EQ(names_in(s.files_dir()), (std::set<std::string>{"taken"}));
   EXPECT_EQ(s.get("/api/v1/assets").body_json()["assets"].size(), 1u);
   EXPECT_TRUE(s.alive());
 }

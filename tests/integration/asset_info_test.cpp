@@ -181,9 +181,10 @@ TEST(AssetInfo, TheRecordIsKeptAcrossARestartAndNoFileOfARefusedUploadIs) {
       EXPECT_EQ(upload(s, broken.name, broken.body).status, 422);
   }
   std::set<std::string> kept;
-  for (const auto& entry : fs::directory_iterator(state.path() / "assets"))
-    kept.insert(entry.path().filename().string());
-  EXPECT_EQ(kept, (std::set<std::string>{"quad", "quad.json"}));
+  for (const auto& folder : {"assets", "asset-files"})
+    for (const auto& entry : fs::directory_iterator(state.path() / folder))
+      kept.insert(std::string(folder) + "/" + entry.path().filename().string());
+  EXPECT_EQ(kept, (std::set<std::string>{"asset-files/quad", "assets/quad.json"}));
   test::ServerProcess s(flags);
   EXPECT_EQ(get(s, "/api/v1/assets/quad").body_json(), before);
 }

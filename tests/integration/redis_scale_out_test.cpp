@@ -431,7 +431,7 @@ TEST(RedisScaleOut, AMeshBundleThatDoesNotMatchItsHashIsRefused) {
   ASSERT_TRUE(cluster.api->wait_log("work items of")) << cluster.api->log();
   // The texture changes after the render published its bundle's hash: the api server now sends files
   // of another content under that hash.
-  std::ofstream(api_state.path() / "assets" / "quad" / "checker.png", std::ios::binary | std::ios::app)
+  std::ofstream(api_state.path() / "asset-files" / "quad" / "checker.png", std::ios::binary | std::ios::app)
       << "x";
   cluster.add_worker();
   const json st = wait_finished(*cluster.api, id);

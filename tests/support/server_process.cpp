@@ -39,13 +39,15 @@ int wait_for_port(const std::string& log_path, int pid) {
 }
 
 // Starts the server with its output to a new log file; returns the pid and sets `log_path`.
-int spawn(const std::vector<std::string>& args, std::string& log_path, const Variables& variables) {
+int spawn(const std::vector<std::string>& args, std::string& log_path, const Variables& variables,
+          const std::vector<std::string>& launcher = {}) {
   char tmpl[] = "/tmp/lightprobe-server-XXXXXX.log";
   const int fd = mkstemps(tmpl, 4);
   if (fd < 0) throw std::runtime_error("mkstemps failed");
   log_path = tmpl;
 
-  std::vector<std::string> argv = {LIGHTPROBE_SERVER_BIN, "--host", "127.0.0.1", "--port", "0"};
+  std::vector<std::string> argv = launcher;
+  argv.insert(argv.end(), {LIGHTPROBE_SERVER_BIN, "--host", "127.0.0.1", "--port", "0"});
   argv.insert(argv.end(), args.begin(), args.end());
   const int pid = start_process(argv, fd, fd, {}, variables);
   close(fd);
@@ -74,13 +76,13 @@ bool names_state_dir(const std::vector<std::string>& args) {
 }  // namespace
 
 ServerProcess::ServerProcess(const std::vector<std::string>& args, const Variables& variables,
-                             StartUntil until) {
+                             StartUntil until, const std::vector<std::string>& launcher) {
   std::vector<std::string> all = args;
   if (!names_state_dir(args)) {
     own_state_dir_ = make_temp_dir();
     all.insert(all.end(), {"--state-dir", own_state_dir_.string()});
   }
-  pid_ = spawn(all, log_path_, variables);
+  pid_ = spawn(all, log_path_, variables, launcher);
   port_ = wait_for_port(log_path_, pid_);
   if (until != StartUntil::Ready) return;
   try {

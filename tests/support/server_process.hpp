@@ -23,9 +23,10 @@ enum class StartUntil { Ready, Listening };
 
 class ServerProcess {
  public:
-  // `args` are extra flags, e.g. {"--load", "forest=/abs/forest.exr", "--max-samples", "1000"}.
+  // `args` are extra flags, e.g. {"--load", "forest=/abs/forest.exr", "--max-samples", "1000"};
+  // `launcher` a command the server runs under (e.g. SmallDisk::launcher()), which execs it.
   explicit ServerProcess(const std::vector<std::string>& args = {}, const Variables& variables = {},
-                         StartUntil until = StartUntil::Ready);
+                         StartUntil until = StartUntil::Ready, const std::vector<std::string>& launcher = {});
   ~ServerProcess();
   ServerProcess(const ServerProcess&) = delete;
   ServerProcess& operator=(const ServerProcess&) = delete;

@@ -164,7 +164,7 @@ TEST(AssetMeshPaths, GlbAndGltfAssetsResolveToTheirModelFiles) {
                            file_member("scene/red green.png", file("gltf/red green.png")),
                            file_member("scene/flat_normal.png", file("gltf/flat_normal.png"))});
   store_asset(app, "scene", bytes_of(gltf));
-  const fs::path assets = fs::canonical(state.path() / "assets");
+  const fs::path assets = fs::canonical(state.path() / "asset-files");
   EXPECT_EQ(resolve_mesh_path(app, "assets/box", "path"), assets / "box" / "model.glb");
   EXPECT_EQ(resolve_mesh_path(app, "assets/scene", "path"), assets / "scene" / "scene" / "scene.gltf");
   EXPECT_EQ(resolve_mesh_path(app, "assets/scene/scene/quad.bin", "path"),
