@@ -94,9 +94,12 @@ TEST(BundleHash, ChangesWithAnyPathOrFile) {
 }
 
 TEST(BundleHash, HasOneForm) {
-  EXPECT_TRUE(is_bundle_hash("0123456789abcdef-bundle"));
-  for (const char* bad : {"", "0123456789abcdef-64x32", "0123456789ABCDEF-bundle", "0123456789abcde-bundle",
-                          "../456789abcdef-bundle", "0123456789abcdef-bundle/x", "0123456789abcdeg-bundle"})
+  const std::string hex(64, 'a');
+  EXPECT_TRUE(is_bundle_hash("0123456789abcdef" + std::string(48, 'e') + "-bundle"));
+  for (const std::string& bad : std::vector<std::string>{
+           std::string(), hex + "-64x32", std::string(64, 'A') + "-bundle", hex.substr(1) + "-bundle",
+           hex + "0-bundle", "0123456789abcdef-bundle", "../" + hex.substr(3) + "-bundle", hex + "-bundle/x",
+           hex.substr(1) + "g-bundle"})
     EXPECT_FALSE(is_bundle_hash(bad)) << bad;
 }
 
