@@ -126,21 +126,22 @@ TEST(MeshBundle, AnObjModelsTarUnpacksToTheSameHash) {
 }
 
 TEST(RenderDescription, CarriesTheMeshBundles) {
+  const std::string bundle = "0123456789abcdef" + std::string(48, 'e') + "-bundle";
   const RenderDescription d{nlohmann::json{{"spp", 4}},
-                            "0123456789abcdef-8x4",
+                            std::string(64, 'e') + "-8x4",
                             "http://127.0.0.1:1",
-                            {{2, "0123456789abcdef-bundle", "dir/quad.obj"}}};
+                            {{2, bundle, "dir/quad.obj"}}};
   const RenderDescription back = parse_description(description_json(d));
   EXPECT_EQ(back.request, d.request);
   ASSERT_EQ(back.meshes.size(), 1u);
   ASSERT_NE(back.mesh(2), nullptr);
-  EXPECT_EQ(back.mesh(2)->bundle, "0123456789abcdef-bundle");
+  EXPECT_EQ(back.mesh(2)->bundle, bundle);
   EXPECT_EQ(back.mesh(2)->model, "dir/quad.obj");
   EXPECT_EQ(back.mesh(0), nullptr);
   nlohmann::json j = nlohmann::json::parse(description_json(d));
   j["meshes"][0]["bundle"] = "../../etc-bundle";
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);
-  j["meshes"][0] = {{"object", -1}, {"bundle", "0123456789abcdef-bundle"}, {"model", "a.obj"}};
+  j["meshes"][0] = {{"object", -1}, {"bundle", bundle}, {"model", "a.obj"}};
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);
   j["meshes"] = "none";
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);
