@@ -88,6 +88,10 @@ const std::vector<TextFlag>& text_flags() {
        "an origin (http://host:port, or *) whose pages may call the API (repeatable);\nwithout it, "
        "requests that change state from another origin get 403",
        true, [](Options& o, const std::string& v) { o.browser.cors_origins.push_back(v); }},
+      {"trusted-proxy", "ADDR[/BITS]",
+       "a reverse proxy whose X-Forwarded-For names the client (repeatable): its\nconnections are not "
+       "limited per client, its requests are, by the forwarded client",
+       true, [](Options& o, const std::string& v) { o.transport.trusted_proxies.add(v); }},
       {"auth-token-file", "FILE",
        "when given, every API route but /api/v1/health and /api/v1/ready, and /metrics,\nneed "
        "Authorization: Bearer TOKEN, the token FILE holds (others get 401)",

@@ -9,12 +9,13 @@ RequestContext& current_request() {
   return context;
 }
 
-void begin_request_context(std::string accept_encoding) {
+void begin_request_context(std::string accept_encoding, std::string client) {
   RequestContext& r = current_request();
   static std::atomic<uint64_t> arrivals{0};
   r.start = std::chrono::steady_clock::now();
   r.arrival = arrivals.fetch_add(1, std::memory_order_relaxed);
   r.id.clear();
+  r.client = std::move(client);
   r.route.clear();
   r.accept_encoding = std::move(accept_encoding);
   r.caching = Caching::None;
