@@ -40,6 +40,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{CannotResume, 409, "cannot_resume", {}},
     ErrorCodeEntry{EnvmapMissing, 409, "envmap_missing", {}},
     ErrorCodeEntry{EnvmapChanged, 409, "envmap_changed", {}},
+    ErrorCodeEntry{ModelChanged, 409, "model_changed", {}},
     ErrorCodeEntry{WorkerOnly, 409, "worker_only", {}},
     ErrorCodeEntry{QueueFull, 503, "queue_full", {}},
     ErrorCodeEntry{TooManyStreams, 503, "too_many_streams", {}},

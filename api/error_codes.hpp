@@ -46,6 +46,7 @@ enum class ErrorCode {
   CannotResume,
   EnvmapMissing,
   EnvmapChanged,
+  ModelChanged,
   WorkerOnly,  // --role worker: renders work items of other servers, accepts no render of its own
   // Capacity.
   QueueFull,

@@ -9,7 +9,7 @@
 
 #include "api/render_schema.hpp"
 #include "engine/render/pass_schedule.hpp"
-#include "server/maps/envmap_fingerprint.hpp"
+#include "server/maps/envmap_content_hash.hpp"
 #include "server/renders/render_coordinator.hpp"
 
 namespace lp::server {
@@ -30,6 +30,7 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       stats_(record.stats),
       render_s_(record.render_s),
       envmap_fingerprint_(record.envmap_fingerprint),
+      model_hashes_(record.model_hashes),
       memory_(std::move(context.memory)),
       files_(context.store, record.id, image_ ? record.image_file : "") {
   set_work(request_.settings.spp, spp_done_);  // until run() counts in tiles
@@ -72,6 +73,7 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   r.spp_done = spp_done_;
   r.ranges_done = ranges_done_;
   r.envmap_fingerprint = envmap_fingerprint_;
+  r.model_hashes = model_hashes_;
   r.stats = stats_;
   r.render_s = render_s_;
   return r;
@@ -95,10 +97,12 @@ void RenderJob::checkpoint() {
   if (!files_.keeps()) return;
   const RenderImage current = image();
   RenderRecord kept = record();
-  kept.envmap_fingerprint = envmap_fingerprint(*envmap_);
+  kept.envmap_fingerprint = envmap_content_hash(*envmap_);
+  kept.model_hashes = run_model_hashes_;
   if (!files_.save_image(*current.image, current.spp_done, kept)) return;
   std::lock_guard lock(mutex_);
   envmap_fingerprint_ = kept.envmap_fingerprint;
+  model_hashes_ = kept.model_hashes;
 }
 
 // Drops the passes an earlier run finished; returns the samples per pixel they hold. An adaptive render
@@ -131,6 +135,7 @@ bool RenderJob::run() {
     spdlog::info("render {} {} after {:.2f} s ({} spp done)", id(), how, elapsed_s(), spp_done());
   };
   try {
+    if (files_.keeps()) run_model_hashes_ = model_content_hashes(request_.scene);
     // An adaptive render's passes depend on the whole image so far: it is never split into ranges.
     const bool uniform = request_.settings.sampling == render::SamplingMode::Uniform;
     const bool ended = scale_out_ && uniform  ? render_split()
@@ -221,7 +226,7 @@ bool RenderJob::render_split() {
   save_record();
   if (run.spp_done > 0) spdlog::info("render {} continues after {} spp", id(), run.spp_done);
   RenderCoordinator coordinator(*scale_out_, id());
-  const RenderDescription description{request_json_, envmap_fingerprint(*envmap_), scale_out_->advertise_url,
+  const RenderDescription description{request_json_, envmap_content_hash(*envmap_), scale_out_->advertise_url,
                                       scale_out_->bundles->publish(request_.scene)};
   const bool done = coordinator.run(
       description, items, done_film(), [this] { return interrupt_requested() || cancel_flag().load(); },

@@ -98,6 +98,8 @@ class RenderJob : public Job {
   render::RenderStats stats_;
   double render_s_ = 0;             // time spent in passes (not building the scene), for the rates
   std::string envmap_fingerprint_;  // of the map the kept image was rendered with
+  ModelHashes model_hashes_;        // of the models the kept image was rendered with
+  ModelHashes run_model_hashes_;    // of this run's models, hashed when it starts
 
   MemoryReservation memory_;
   RenderFiles files_;

@@ -1,6 +1,7 @@
 #include "server/renders/render_record.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <stdexcept>
 
 namespace lp::server {
@@ -36,6 +37,25 @@ std::vector<render::SampleRange> parse_ranges(const nlohmann::json& j, int spp_d
   return out;
 }
 
+// {"OBJECT INDEX": HASH, ...}
+nlohmann::json model_hashes_json(const ModelHashes& hashes) {
+  auto out = nlohmann::json::object();
+  for (const auto& [object, hash] : hashes) out[std::to_string(object)] = hash;
+  return out;
+}
+
+ModelHashes parse_model_hashes(const nlohmann::json& j) {
+  ModelHashes out;
+  for (const auto& [key, hash] : j.items()) {
+    size_t object = 0;
+    const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), object);
+    if (ec != std::errc() || end != key.data() + key.size())
+      throw std::invalid_argument("a model hash is not keyed by an object index");
+    out[object] = hash.get<std::string>();
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json record_json(const RenderRecord& r) {
@@ -50,6 +70,7 @@ nlohmann::json record_json(const RenderRecord& r) {
           {"sample_ranges_done", ranges_json(r.ranges_done)},
           {"image_file", r.image_file},
           {"envmap_fingerprint", r.envmap_fingerprint},
+          {"model_hashes", model_hashes_json(r.model_hashes)},
           {"elapsed_s", r.elapsed_s},
           {"samples", r.stats.samples},
           {"rays", r.stats.rays},
@@ -72,6 +93,7 @@ RenderRecord parse_render_record(const nlohmann::json& j) {
   r.image_file = j.at("image_file").get<std::string>();
   r.ranges_done = parse_ranges(j.value("sample_ranges_done", nlohmann::json::array()), r.spp_done);
   r.envmap_fingerprint = j.at("envmap_fingerprint").get<std::string>();
+  r.model_hashes = parse_model_hashes(j.value("model_hashes", nlohmann::json::object()));
   r.elapsed_s = j.at("elapsed_s").get<double>();
   r.stats = {j.at("samples").get<uint64_t>(), j.at("rays").get<uint64_t>()};
   r.render_s = j.at("render_s").get<double>();

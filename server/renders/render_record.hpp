@@ -1,7 +1,7 @@
 #pragma once
 // A render's record in the state directory: enough to list it after a restart, serve its image, and
 // continue it exactly where it stopped (the request as accepted, the samples per pixel done, the file of
-// their mean image, and a fingerprint of the map it renders).
+// their mean image, and the content hashes of the map and the models it was rendered with).
 #include <chrono>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,6 +11,7 @@
 #include "engine/render/partial_film.hpp"
 #include "engine/render/renderer.hpp"
 #include "server/jobs/job.hpp"
+#include "server/renders/model_hashes.hpp"
 
 namespace lp::server {
 
@@ -25,7 +26,8 @@ struct RenderRecord {
   // ranges as they arrive. Empty for a render that ran here.
   std::vector<render::SampleRange> ranges_done;
   std::string image_file;          // in the renders folder; empty before the first pass
-  std::string envmap_fingerprint;  // envmap_fingerprint() of the map; empty before the first pass
+  std::string envmap_fingerprint;  // envmap_content_hash() of the map; empty before the first pass
+  ModelHashes model_hashes;        // of the mesh objects' models; empty before the first pass
   double elapsed_s = 0;
   render::RenderStats stats;
   double render_s = 0;  // time spent in passes

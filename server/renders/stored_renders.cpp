@@ -4,11 +4,14 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <stdexcept>
+#include <variant>
 
 #include "api/api_error.hpp"
-#include "server/maps/envmap_fingerprint.hpp"
+#include "server/maps/envmap_content_hash.hpp"
+#include "server/renders/model_hashes.hpp"
 #include "server/renders/scene_meshes.hpp"
 
 namespace lp::server {
@@ -70,6 +73,32 @@ api::ApiError cannot_resume(const RenderJob& job, api::ErrorCode code, const std
   return api::ApiError(code, fmt::format("render '{}' cannot resume: {}", job.id(), why));
 }
 
+// The mesh paths as the request names them (resolving them makes them server paths).
+std::map<size_t, std::string> mesh_names(const render::SceneDesc& scene) {
+  std::map<size_t, std::string> out;
+  for (size_t i = 0; i < scene.objects.size(); ++i)
+    if (const auto* mesh = std::get_if<render::MeshObject>(&scene.objects[i].shape))
+      out[i] = mesh->path.generic_string();
+  return out;
+}
+
+// Refuses to continue an image rendered with other models than those the request names now.
+void check_models(const RenderJob& job, const ModelHashes& kept, const render::SceneDesc& scene,
+                  const std::map<size_t, std::string>& names) {
+  const ModelHashes now = model_content_hashes(scene);
+  for (const auto& [object, name] : names) {
+    const auto was = kept.find(object);
+    const auto is = now.find(object);
+    const bool same = was == kept.end() ? is == now.end()
+                                        : is != now.end() && !is->second.empty() && is->second == was->second;
+    if (!same)
+      throw cannot_resume(
+          job, api::ErrorCode::ModelChanged,
+          fmt::format("the model '{}' (scene.objects[{}].path) is not the one it was rendering",
+                      api::excerpt(name), object));
+  }
+}
+
 }  // namespace
 
 void restore_renders(App& app) {
@@ -123,8 +152,10 @@ QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
   RenderRecord record = job->record();
   api::RenderRequest request;
   int64_t triangles = 0;
+  std::map<size_t, std::string> names;
   try {
     request = api::parse_render_request(record.request, app.options.limits);
+    names = mesh_names(request.scene);
     triangles = resolve_meshes(request.scene, app);
     resolve_view(request);
   } catch (const api::ApiError& e) {
@@ -135,10 +166,11 @@ QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
     throw cannot_resume(
         *job, api::ErrorCode::EnvmapMissing,
         fmt::format("no map '{}' is loaded; load it under that name and retry", request.envmap));
-  if (record.spp_done > 0 && envmap_fingerprint(*envmap->map) != record.envmap_fingerprint)
+  if (record.spp_done > 0 && envmap_content_hash(*envmap->map) != record.envmap_fingerprint)
     throw cannot_resume(
         *job, api::ErrorCode::EnvmapChanged,
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
+  if (record.spp_done > 0) check_models(*job, record.model_hashes, request.scene, names);
   auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles,
                              job->image().image, job.get());
   if (!queued.job) {

@@ -17,7 +17,7 @@ void restore_renders(App& app);
 
 // Queues a continuation of an interrupted render, which replaces it under the same id; no job if the
 // queue is full. Throws ApiError 409 if the job is not interrupted, its map is not loaded, or the map
-// loaded under its name is not the one it was rendering.
+// loaded under its name or a mesh object's model is not the one it was rendering (another content hash).
 QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job);
 
 }  // namespace lp::server

@@ -1,11 +1,11 @@
-// GET /api/v1/content/{hash}: a map this server holds, by its content hash (maps/envmap_fingerprint.hpp), or
+// GET /api/v1/content/{hash}: a map this server holds, by its content hash (maps/envmap_content_hash.hpp), or
 // a mesh bundle a split render of this server published (scale_out/mesh_bundles.hpp), as a tar, for the
 // workers of a render split over Redis (scale_out/map_fetcher.hpp, scale_out/bundle_fetcher.hpp).
 #include "api/api_error.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
 #include "server/http/reserved_content.hpp"
-#include "server/maps/envmap_fingerprint.hpp"
+#include "server/maps/envmap_content_hash.hpp"
 #include "server/routes/routes.hpp"
 #include "server/scale_out/bundle_archive.hpp"
 
@@ -16,7 +16,7 @@ constexpr const char* kTarType = "application/x-tar";
 
 bool send_map(App& app, const std::string& hash, httplib::Response& res) {
   for (const auto& entry : app.envmaps.list()) {
-    if (envmap_fingerprint(*entry->map) != hash) continue;
+    if (envmap_content_hash(*entry->map) != hash) continue;
     const Image& pixels = entry->map->image();
     auto memory = app.memory.reserve(encode_bytes(ImageFormat::Exr, pixels.width(), pixels.height()),
                                      MemoryUse::Transient, "encoding a map for a worker");

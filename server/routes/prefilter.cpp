@@ -13,7 +13,7 @@
 #include "engine/image/image_io.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/jobs/prefilter_job.hpp"
-#include "server/maps/envmap_fingerprint.hpp"
+#include "server/maps/envmap_content_hash.hpp"
 #include "server/routes/job_answers.hpp"
 #include "server/routes/routes.hpp"
 
@@ -45,7 +45,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   static std::mutex submitting;
   const auto entry = app.envmaps.get(path_param(req, 1));
   auto request = api::parse_prefilter_request(req.body);
-  const std::string fingerprint = envmap_fingerprint(*entry->map);
+  const std::string fingerprint = envmap_content_hash(*entry->map);
   std::lock_guard lock(submitting);
   if (const auto job = same_chain(app, fingerprint, request)) {
     auto status = job->status_json();

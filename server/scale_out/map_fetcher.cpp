@@ -6,7 +6,7 @@
 #include <span>
 #include <stdexcept>
 
-#include "server/maps/envmap_fingerprint.hpp"
+#include "server/maps/envmap_content_hash.hpp"
 #include "server/maps/envmap_loading.hpp"
 #include "server/scale_out/content_download.hpp"
 
@@ -35,7 +35,7 @@ std::shared_ptr<const EnvMap> MapFetcher::get(const std::string& hash, const std
 
 std::shared_ptr<const EnvMap> MapFetcher::own(const std::string& hash) const {
   for (const auto& entry : app_.envmaps.list())
-    if (envmap_fingerprint(*entry->map) == hash) return entry->map;
+    if (envmap_content_hash(*entry->map) == hash) return entry->map;
   return nullptr;
 }
 
@@ -55,7 +55,7 @@ std::shared_ptr<const EnvMap> MapFetcher::fetch(const std::string& hash,
   auto map = std::make_shared<EnvMap>(std::move(image));
   memory.pixels.set_use(MemoryUse::Held);
   map->account_memory(app_.memory, std::move(memory.pixels));
-  if (envmap_fingerprint(*map) != hash)
+  if (envmap_content_hash(*map) != hash)
     throw std::runtime_error(fmt::format("the map fetched from {} is not {}", source_url, hash));
   spdlog::info("fetched map {} from {} ({} bytes)", hash, source_url, file_bytes);
   return map;

@@ -1,5 +1,5 @@
 #pragma once
-// The maps a worker renders with, by content hash (maps/envmap_fingerprint.hpp): one of this server's own
+// The maps a worker renders with, by content hash (maps/envmap_content_hash.hpp): one of this server's own
 // maps when it holds the same pixels, else fetched from the coordinator (GET /api/v1/content/{hash}, float
 // OpenEXR, no larger than a map within --max-pixels can be), checked against the hash and kept for the
 // next items (the last few, by last use). The download and the decoded pixels are reserved in the memory

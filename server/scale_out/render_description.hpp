@@ -1,6 +1,6 @@
 #pragma once
 // What a worker needs to render items of a render it did not receive: the request as the client sent it
-// (scene, lighting, settings and seed), the content hash of its map (maps/envmap_fingerprint.hpp), the mesh
+// (scene, lighting, settings and seed), the content hash of its map (maps/envmap_content_hash.hpp), the mesh
 // bundle of each mesh object read from files (mesh_bundles.hpp) and where to fetch the map and the
 // bundles by their hashes. Stored as JSON under the render's key in Redis.
 #include <cstddef>

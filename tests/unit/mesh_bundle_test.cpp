@@ -94,9 +94,12 @@ TEST(BundleHash, ChangesWithAnyPathOrFile) {
 }
 
 TEST(BundleHash, HasOneForm) {
-  EXPECT_TRUE(is_bundle_hash("0123456789abcdef-bundle"));
-  for (const char* bad : {"", "0123456789abcdef-64x32", "0123456789ABCDEF-bundle", "0123456789abcde-bundle",
-                          "../456789abcdef-bundle", "0123456789abcdef-bundle/x", "0123456789abcdeg-bundle"})
+  const std::string hex(64, 'a');
+  EXPECT_TRUE(is_bundle_hash("0123456789abcdef" + std::string(48, 'e') + "-bundle"));
+  for (const std::string& bad : std::vector<std::string>{
+           std::string(), hex + "-64x32", std::string(64, 'A') + "-bundle", hex.substr(1) + "-bundle",
+           hex + "0-bundle", "0123456789abcdef-bundle", "../" + hex.substr(3) + "-bundle", hex + "-bundle/x",
+           hex.substr(1) + "g-bundle"})
     EXPECT_FALSE(is_bundle_hash(bad)) << bad;
 }
 
@@ -123,21 +126,22 @@ TEST(MeshBundle, AnObjModelsTarUnpacksToTheSameHash) {
 }
 
 TEST(RenderDescription, CarriesTheMeshBundles) {
+  const std::string bundle = "0123456789abcdef" + std::string(48, 'e') + "-bundle";
   const RenderDescription d{nlohmann::json{{"spp", 4}},
-                            "0123456789abcdef-8x4",
+                            std::string(64, 'e') + "-8x4",
                             "http://127.0.0.1:1",
-                            {{2, "0123456789abcdef-bundle", "dir/quad.obj"}}};
+                            {{2, bundle, "dir/quad.obj"}}};
   const RenderDescription back = parse_description(description_json(d));
   EXPECT_EQ(back.request, d.request);
   ASSERT_EQ(back.meshes.size(), 1u);
   ASSERT_NE(back.mesh(2), nullptr);
-  EXPECT_EQ(back.mesh(2)->bundle, "0123456789abcdef-bundle");
+  EXPECT_EQ(back.mesh(2)->bundle, bundle);
   EXPECT_EQ(back.mesh(2)->model, "dir/quad.obj");
   EXPECT_EQ(back.mesh(0), nullptr);
   nlohmann::json j = nlohmann::json::parse(description_json(d));
   j["meshes"][0]["bundle"] = "../../etc-bundle";
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);
-  j["meshes"][0] = {{"object", -1}, {"bundle", "0123456789abcdef-bundle"}, {"model", "a.obj"}};
+  j["meshes"][0] = {{"object", -1}, {"bundle", bundle}, {"model", "a.obj"}};
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);
   j["meshes"] = "none";
   EXPECT_THROW(parse_description(j.dump()), std::invalid_argument);

@@ -16,6 +16,7 @@ RenderRecord split_record() {
   r.ranges_done = {{16, 32}, {0, 8}};
   r.image_file = "3f9c0a7d12e4b856.24.exr";
   r.envmap_fingerprint = "ab-4x2";
+  r.model_hashes = {{0, "c0ffee"}, {12, ""}};
   return r;
 }
 
@@ -26,6 +27,20 @@ TEST(RenderRecord, ReadsBackWithTheRangesDone) {
   EXPECT_EQ(back.ranges_done[0], (render::SampleRange{0, 8}));
   EXPECT_EQ(back.ranges_done[1], (render::SampleRange{16, 32}));
   EXPECT_EQ(back.image_file, "3f9c0a7d12e4b856.24.exr");
+}
+
+TEST(RenderRecord, ReadsBackTheHashesOfItsModels) {
+  const auto json = record_json(split_record());
+  EXPECT_EQ(json["model_hashes"], nlohmann::json({{"0", "c0ffee"}, {"12", ""}}));
+  EXPECT_EQ(parse_render_record(json).model_hashes, (ModelHashes{{0, "c0ffee"}, {12, ""}}));
+  auto without = json;
+  without.erase("model_hashes");  // a record of an earlier version
+  EXPECT_TRUE(parse_render_record(without).model_hashes.empty());
+  for (const char* key : {"x", "-1", "1x", ""}) {
+    auto bad = json;
+    bad["model_hashes"] = {{key, "c0ffee"}};
+    EXPECT_THROW(parse_render_record(bad), std::invalid_argument) << key;
+  }
 }
 
 TEST(RenderRecord, ARecordWithoutRangesIsTheFirstSamples) {
