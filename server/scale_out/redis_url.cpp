@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <iterator>
 #include <stdexcept>
 #include <string_view>
 
@@ -20,7 +21,10 @@ bool unreserved(char c) {
 std::string percent_encoded(std::string_view text) {
   std::string out;
   for (const char c : text)
-    out += unreserved(c) ? std::string(1, c) : fmt::format("%{:02X}", static_cast<unsigned char>(c));
+    if (unreserved(c))
+      out += c;
+    else
+      fmt::format_to(std::back_inserter(out), "%{:02X}", static_cast<unsigned char>(c));
   return out;
 }
 
@@ -140,7 +144,8 @@ std::string redacted_url(const std::string& url) {
   const size_t scheme = url.find("://");
   const size_t at = url.rfind('@');
   if (scheme == std::string::npos || at == std::string::npos || at < scheme) return url;
-  return url.substr(0, scheme + 3) + "***" + url.substr(at);
+  return fmt::format("{}***{}", std::string_view(url).substr(0, scheme + 3),
+                     std::string_view(url).substr(at));
 }
 
 RedisAddress parse_redis_url(const std::string& url) {
