@@ -24,7 +24,8 @@ Usage: lightprobe-server [options]
 constexpr const char* kActions =
     R"(  --list-routes          print every registered route (METHOD PATH) and exit
   --health-check URL     GET the URL (http://HOST[:PORT]/PATH) with a {health_timeout} s timeout and exit:
-                         0 if it answers 200, 1 otherwise (a container's HEALTHCHECK)
+                         0 if it answers 200, 1 otherwise (a container's HEALTHCHECK); a PATH alone
+                         (/api/v1/ready) probes this configuration's --host and --port
   --version              print the version and exit
   --help                 print this help and exit
 )";
@@ -88,6 +89,10 @@ const std::vector<TextFlag>& text_flags() {
        "an origin (http://host:port, or *) whose pages may call the API (repeatable);\nwithout it, "
        "requests that change state from another origin get 403",
        true, [](Options& o, const std::string& v) { o.browser.cors_origins.push_back(v); }},
+      {"trusted-proxy", "ADDR[/BITS]",
+       "a reverse proxy whose X-Forwarded-For names the client (repeatable): its\nconnections are not "
+       "limited per client, its requests are, by the forwarded client",
+       true, [](Options& o, const std::string& v) { o.transport.trusted_proxies.add(v); }},
       {"auth-token-file", "FILE",
        "when given, every API route but /api/v1/health and /api/v1/ready, and /metrics,\nneed "
        "Authorization: Bearer TOKEN, the token FILE holds (others get 401)",
@@ -264,7 +269,7 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults,
       {{"--health-check"},
        true,
        [&o](const std::string& url) {
-         parse_health_check_url(url);  // a malformed URL is a bad flag
+         if (!url.starts_with('/')) parse_health_check_url(url);  // a malformed URL is a bad flag
          o.health_check_url = url;
          return true;
        }},

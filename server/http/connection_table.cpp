@@ -14,8 +14,9 @@ namespace lp::server {
 
 using Clock = std::chrono::steady_clock;
 
-Connection::Connection(uint64_t id_, int fd_, std::string ip_, int port_, std::chrono::seconds io_timeout)
-    : id(id_), fd(fd_), ip(std::move(ip_)), port(port_), stream(fd_, ip, port_, io_timeout) {}
+Connection::Connection(uint64_t id_, int fd_, std::string ip_, int port_, bool proxy_,
+                       std::chrono::seconds io_timeout)
+    : id(id_), fd(fd_), ip(std::move(ip_)), port(port_), proxy(proxy_), stream(fd_, ip, port_, io_timeout) {}
 
 ConnectionTable::ConnectionTable(int max_connections, int max_per_client, std::chrono::seconds io_timeout)
     : max_connections_(max_connections),
@@ -36,25 +37,25 @@ ConnectionTable::~ConnectionTable() {
   close(epoll_fd_);
 }
 
-std::optional<std::string> ConnectionTable::admit(int fd, const std::string& ip, int port,
+std::optional<std::string> ConnectionTable::admit(int fd, const std::string& ip, int port, bool proxy,
                                                   Clock::time_point deadline) {
   std::lock_guard lock(mutex_);
   if (int(connections_.size()) >= max_connections_)
     return fmt::format("{} connections are open, the server's limit (--max-connections)",
                        connections_.size());
-  int& from_client = per_client_[ip];
+  const int from_client = proxy ? 0 : per_client_[ip];
   if (from_client >= max_per_client_)
     return fmt::format("{} connections from {} are open, the limit per client (--max-connections-per-client)",
                        from_client, ip);
-  auto c = std::make_unique<Connection>(next_id_++, fd, ip, port, io_timeout_);
+  auto c = std::make_unique<Connection>(next_id_++, fd, ip, port, proxy, io_timeout_);
   c->started = Clock::now();
   c->deadline = deadline;
   c->parked = true;
   if (!arm(*c, EPOLL_CTL_ADD)) {
-    if (from_client == 0) per_client_.erase(ip);
+    if (!proxy && from_client == 0) per_client_.erase(ip);
     return std::string("the connection cannot be watched: ") + std::strerror(errno);
   }
-  ++from_client;
+  if (!proxy) ++per_client_[ip];
   connections_.emplace(c->id, std::move(c));
   return std::nullopt;
 }
@@ -93,6 +94,22 @@ void ConnectionTable::park(Connection& c, Clock::time_point deadline) {
   if (closing_idle_ || !arm(c, EPOLL_CTL_MOD)) end(connections_.find(c.id));
 }
 
+std::optional<std::string> ConnectionTable::begin_request(const std::string& client) {
+  std::lock_guard lock(mutex_);
+  int& in_flight = proxied_requests_[client];
+  if (in_flight >= max_per_client_)
+    return fmt::format(
+        "{} requests from {} are in flight, the limit per client (--max-connections-per-client)", in_flight,
+        client);
+  ++in_flight;
+  return std::nullopt;
+}
+
+void ConnectionTable::end_request(const std::string& client) {
+  std::lock_guard lock(mutex_);
+  if (--proxied_requests_[client] <= 0) proxied_requests_.erase(client);
+}
+
 void ConnectionTable::release(Connection& c) {
   std::lock_guard lock(mutex_);
   end(connections_.find(c.id));
@@ -103,7 +120,7 @@ void ConnectionTable::release(Connection& c) {
 void ConnectionTable::end(std::unordered_map<uint64_t, std::unique_ptr<Connection>>::iterator it) {
   const std::unique_ptr<Connection> c = std::move(it->second);
   connections_.erase(it);
-  if (--per_client_[c->ip] <= 0) per_client_.erase(c->ip);
+  if (!c->proxy && --per_client_[c->ip] <= 0) per_client_.erase(c->ip);
   close(c->fd);
   if (connections_.empty()) emptied_.notify_all();
 }

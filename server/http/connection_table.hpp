@@ -19,11 +19,12 @@
 namespace lp::server {
 
 struct Connection {
-  Connection(uint64_t id, int fd, std::string ip, int port, std::chrono::seconds io_timeout);
+  Connection(uint64_t id, int fd, std::string ip, int port, bool proxy, std::chrono::seconds io_timeout);
   const uint64_t id;
   const int fd;
   const std::string ip;
   const int port;
+  const bool proxy;  // from a trusted proxy: its requests are counted per client, not the connection
   ConnectionStream stream;
   HeadScanner head;  // the head of the request being read
   std::optional<std::chrono::steady_clock::time_point>
@@ -41,9 +42,13 @@ class ConnectionTable {
   ConnectionTable& operator=(const ConnectionTable&) = delete;
 
   // Takes `fd` and parks it until `deadline`; or returns why it is refused (over a limit), and then the
-  // caller still owns `fd`.
-  std::optional<std::string> admit(int fd, const std::string& ip, int port,
+  // caller still owns `fd`. A `proxy`'s connection counts towards the total only.
+  std::optional<std::string> admit(int fd, const std::string& ip, int port, bool proxy,
                                    std::chrono::steady_clock::time_point deadline);
+  // Counts a request a proxy forwards from `client`, or returns why it is refused (as many requests of
+  // that client in flight as a client may hold connections); end_request() when it is answered.
+  std::optional<std::string> begin_request(const std::string& client);
+  void end_request(const std::string& client);
 
   // Blocks until a parked connection has bytes (its id) or end_waits() was called (std::nullopt).
   std::optional<uint64_t> wait_ready();
@@ -83,7 +88,8 @@ class ConnectionTable {
   uint64_t next_id_ = 1;  // 0 is the end_fd_'s entry
   bool closing_idle_ = false;
   std::unordered_map<uint64_t, std::unique_ptr<Connection>> connections_;
-  std::unordered_map<std::string, int> per_client_;
+  std::unordered_map<std::string, int> per_client_;        // direct connections by address
+  std::unordered_map<std::string, int> proxied_requests_;  // requests in flight by forwarded client
 };
 
 }  // namespace lp::server

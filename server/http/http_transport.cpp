@@ -175,7 +175,8 @@ void HttpTransport::accept_connections() {
 void HttpTransport::admit(int fd, const std::string& ip, int port) {
   const int one = 1;
   setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
-  const auto refusal = connections_.admit(fd, ip, port, Clock::now() + limits_.header_timeout);
+  const bool proxy = limits_.trusted_proxies.contains(ip);
+  const auto refusal = connections_.admit(fd, ip, port, proxy, Clock::now() + limits_.header_timeout);
   if (!refusal) return;
   spdlog::debug("{}:{} refused: {}", ip, port, *refusal);
   say_last_words(fd, raw_error_response(api::ErrorCode::TooManyConnections, *refusal, "Retry-After: 1\r\n"));
@@ -226,11 +227,20 @@ bool HttpTransport::serve_requests(Connection& c) {
       open = got == Head::Incomplete;
       break;
     }
+    std::string client = limits_.trusted_proxies.client_of(c.ip, head.forwarded_for);
+    if (c.proxy) {
+      if (const auto refusal = connections_.begin_request(client)) {
+        answer_and_close(c.stream, {api::ErrorCode::TooManyConnections, *refusal});
+        break;
+      }
+    }
     c.stream.begin_request(std::move(head.text), head.body);
-    begin_request_context(std::move(head.accept_encoding));
+    begin_request_context(std::move(head.accept_encoding), client);
     const bool close = stopping_ || c.served + 1 >= keep_alive_max_count_;
     bool closed = false;
     const bool answered = process_request(c.stream, close, closed, {}) && c.stream.flush();
+    end_request_context();
+    if (c.proxy) connections_.end_request(client);
     ++c.served;
     c.started.reset();
     if (!answered || close || closed || !c.stream.body_finished()) {

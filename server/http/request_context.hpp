@@ -16,6 +16,7 @@ struct RequestContext {
   std::chrono::steady_clock::time_point start;
   uint64_t arrival = 0;  // the request's number, counted from 0 in the order requests begin in the process
   std::string id;        // its X-Request-Id (request_id.hpp)
+  std::string client;    // the client's address: the peer's, or behind a trusted proxy the forwarded one
   std::string route;     // the OpenAPI path of the route that answered it; empty if none did
   std::string accept_encoding;
   Caching caching = Caching::None;  // the route's
@@ -24,7 +25,11 @@ struct RequestContext {
 
 // The request of this thread.
 RequestContext& current_request();
-// Starts the context of a new request on this thread (its clock starts now).
-void begin_request_context(std::string accept_encoding);
+// Starts the context of a new request on this thread (its clock starts now), and counts it in flight
+// until end_request_context().
+void begin_request_context(std::string accept_encoding, std::string client);
+void end_request_context();
+// Requests begun and not yet answered, in the whole process.
+int64_t requests_in_flight();
 
 }  // namespace lp::server

@@ -173,6 +173,9 @@ CheckedHead check_request_head(std::string_view head, uint64_t max_body) {
       if (!out.accept_encoding.empty()) out.accept_encoding += ", ";
       out.accept_encoding.append(value);
       continue;
+    } else if (iequals(name, "X-Forwarded-For")) {
+      if (!out.forwarded_for.empty()) out.forwarded_for += ", ";
+      out.forwarded_for.append(value);
     }
     out.text.append(line).append("\r\n");
   }

@@ -49,6 +49,7 @@ struct RequestHead {
   std::string text;
   BodyFraming body;
   std::string accept_encoding;  // the Accept-Encoding headers' values, joined with ", "
+  std::string forwarded_for;    // the X-Forwarded-For headers' values, joined with ", "
 };
 
 // Checks a complete head (as delimited by HeadScanner); `max_body` is the largest body accepted (413).

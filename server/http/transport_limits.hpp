@@ -1,11 +1,13 @@
 #pragma once
 // What clients may hold of the transport: connections (all together and from one address), the time a
 // request's head, a body read or a response write, and an idle keep-alive connection may take, and a
-// request body's size. The flags that set them are declared here.
+// request body's size, and whose word says which client a request is from. The flags that set them are
+// declared here.
 #include <chrono>
 #include <cstdint>
 
 #include "api/parameters.hpp"
+#include "server/http/trusted_proxies.hpp"
 
 namespace lp::server {
 
@@ -18,7 +20,8 @@ inline constexpr api::IntParameter kMaxConnectionsPerClient{
     "max-connections-per-client",
     512,
     {1, 1 << 20},
-    "open connections from one client address; more are refused with 503"};
+    "open connections from one client address, or requests in flight from one client behind a\n"
+    "--trusted-proxy; more are refused with 503"};
 inline constexpr api::IntParameter kHeaderTimeoutS{
     "header-timeout-s", 10, {1, 3600}, "seconds for a request line and its headers to arrive; then 408"};
 inline constexpr api::IntParameter kIoTimeoutS{
@@ -37,6 +40,7 @@ struct TransportLimits {
   std::chrono::seconds io_timeout{kIoTimeoutS.fallback};  // longest wait of a body read or a response write
   std::chrono::seconds keep_alive_timeout{kKeepAliveTimeoutS.fallback};  // idle time between requests
   uint64_t max_body = uint64_t(kMaxUploadMb.fallback) << 20;             // bytes
+  TrustedProxies trusted_proxies;  // --trusted-proxy: whose X-Forwarded-For names the client
 };
 
 }  // namespace lp::server

@@ -25,7 +25,7 @@ std::string json_members(const std::string& message, const httplib::Request& req
       {"route", r.route.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(r.route)},
       {"status", res.status},
       {"duration_ms", std::round(ms * 1000) / 1000},
-      {"client", req.remote_addr}};
+      {"client", r.client}};
   const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return text.substr(1, text.size() - 2);
 }
