@@ -120,9 +120,22 @@ const std::vector<TextFlag>& text_flags() {
       {"resume-interrupted", nullptr, "at start, resume the renders a crash or a stop interrupted", false,
        [](Options& o, const std::string&) { o.resume_interrupted = true; }},
       {"redis", "URL",
-       "redis://HOST[:PORT]: split renders into work items of sample ranges on Redis\nStreams, rendered by "
-       "every server of that Redis (see --role)",
+       "redis://[USER:PASSWORD@]HOST[:PORT][/DB] (rediss:// for TLS): split renders into\nwork items of "
+       "sample ranges on Redis Streams, rendered by every server of that Redis\n(see --role)",
        false, [](Options& o, const std::string& v) { o.scale_out.redis = parse_redis_url(v); }},
+      {"redis-password-file", "FILE",
+       std::string("the password of --redis is the text FILE holds (or the variable ") +
+           kRedisPasswordVariable + ",\nnever a flag; or in the URL)",
+       false, [](Options& o, const std::string& v) { o.scale_out.redis_password_file = v; }},
+      {"redis-tls-ca", "FILE",
+       "with rediss://, the PEM certificates of the CAs that sign Redis's certificate\n(default: the "
+       "system's CA store)",
+       false, [](Options& o, const std::string& v) { o.scale_out.redis_tls.ca = v; }},
+      {"redis-tls-cert", "FILE",
+       "with rediss://, a PEM client certificate, for a Redis that verifies clients", false,
+       [](Options& o, const std::string& v) { o.scale_out.redis_tls.cert = v; }},
+      {"redis-tls-key", "FILE", "with rediss://, the PEM private key of --redis-tls-cert", false,
+       [](Options& o, const std::string& v) { o.scale_out.redis_tls.key = v; }},
       {"role", "NAME",
        enum_names_joined<ServerRole>("|") +
            " with --redis: accept renders and merge their items, render items, or\nboth (default both)",
@@ -263,6 +276,7 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults,
   };
   if (!parse_command_line(argc, argv, flags_of(o), actions, environment)) return std::nullopt;
   check_role(o);
+  complete_redis(o.scale_out, environment(kRedisPasswordVariable));
   return o;
 }
 

@@ -73,6 +73,7 @@ RenderWorker::RenderWorker(App& app, std::string consumer)
       cancel_check_(*app.options.scale_out.redis, 5s),
       maps_(app),
       bundles_(app),
+      heartbeat_(*app.options.scale_out.redis, consumer_),
       thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 RenderWorker::~RenderWorker() {
@@ -106,11 +107,18 @@ std::optional<StreamEntry> RenderWorker::next_item() {
     return std::nullopt;
   }
   const std::chrono::milliseconds claim_after(int64_t(app_.options.scale_out.claim_timeout_s) * 1000);
-  for (const auto& stream : streams)
+  for (const auto& stream : streams) {
+    for (const auto& orphan : orphaned_items(redis_, stream, keys::kGroup))
+      for (auto& entry : redis_.xclaim(stream, keys::kGroup, consumer_, kHeartbeatLifetime, orphan)) {
+        spdlog::info("worker {}: took over item {} of {} from a worker without a heartbeat", consumer_,
+                     entry.id, stream);
+        return std::move(entry);
+      }
     for (auto& entry : redis_.xautoclaim(stream, keys::kGroup, consumer_, claim_after)) {
       spdlog::info("worker {}: took over item {} of {}", consumer_, entry.id, stream);
       return std::move(entry);
     }
+  }
   auto entries = redis_.xreadgroup(keys::kGroup, consumer_, streams, kItemWait);
   if (entries.empty()) return std::nullopt;
   return std::move(entries.front());

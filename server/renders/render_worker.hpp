@@ -1,7 +1,9 @@
 #pragma once
 // The worker's side of renders split over machines (--redis, --role worker or both): a thread that takes
-// work items from the items streams of the active renders (XREADGROUP in the consumer group; items a
-// dead worker held longer than --redis-claim-timeout-s first, with XAUTOCLAIM), renders each sample range
+// work items from the items streams of the active renders (XREADGROUP in the consumer group; first the
+// items of workers whose heartbeat stopped (worker_heartbeat.hpp: a few seconds after they died), with
+// XCLAIM, and items any worker held longer than --redis-claim-timeout-s, with XAUTOCLAIM), renders each
+// sample range
 // into a partial film, uploads it under its range, acknowledges the item and notifies the coordinator.
 // It checks the render's cancel key between tiles, so a cancel stops it within the item. The renderer of
 // the last render is kept for its next items; its map comes through a MapFetcher, its meshes' files
@@ -20,6 +22,7 @@
 #include "server/scale_out/bundle_fetcher.hpp"
 #include "server/scale_out/map_fetcher.hpp"
 #include "server/scale_out/redis_client.hpp"
+#include "server/scale_out/worker_heartbeat.hpp"
 
 namespace lp::server {
 
@@ -51,6 +54,7 @@ class RenderWorker {
   MapFetcher maps_;
   BundleFetcher bundles_;
   std::optional<Loaded> loaded_;
+  WorkerHeartbeat heartbeat_;  // outlives the thread: a stopped worker's items go to others at once
   std::jthread thread_;
 };
 

@@ -22,55 +22,6 @@ constexpr auto kFirstBackoff = 100ms, kMaxBackoff = 2000ms;
 // --redis-item-spp), and one reply of them would take gigabytes.
 constexpr size_t kRangePage = kMaxRedisArrayElements / 16;
 
-timeval to_timeval(std::chrono::milliseconds d) {
-  return {static_cast<time_t>(d.count() / 1000), static_cast<suseconds_t>(d.count() % 1000 * 1000)};
-}
-
-RedisReply copy(const redisReply& r) {
-  RedisReply out;
-  switch (r.type) {
-    case REDIS_REPLY_INTEGER:
-      out.type = RedisReply::Type::Integer;
-      out.integer = r.integer;
-      break;
-    case REDIS_REPLY_STRING:
-    case REDIS_REPLY_STATUS:
-      out.type = r.type == REDIS_REPLY_STRING ? RedisReply::Type::String : RedisReply::Type::Status;
-      out.text.assign(r.str, r.len);
-      break;
-    case REDIS_REPLY_ARRAY:
-      out.type = RedisReply::Type::Array;
-      for (size_t i = 0; i < r.elements; ++i) out.elements.push_back(copy(*r.element[i]));
-      break;
-    default:
-      break;
-  }
-  return out;
-}
-
-// hiredis's createArray, which every reader starts with (its static defaultFunctions).
-void* (*hiredis_create_array)(const redisReadTask*, int) = nullptr;
-
-// An array over the bound is not allocated: its count goes where the reader's privdata points (if
-// anywhere), and the reader fails ("Out of memory", for any null object).
-void* create_bounded_array(const redisReadTask* task, int elements) {
-  if (elements <= kMaxRedisArrayElements) return hiredis_create_array(task, elements);
-  if (task->privdata) *static_cast<int*>(task->privdata) = elements;
-  return nullptr;
-}
-
-// Makes `reader` refuse arrays over kMaxRedisArrayElements, writing a refused count to *refused.
-void bound_arrays(redisReader& reader, int* refused) {
-  static redisReplyObjectFunctions functions = [&] {
-    hiredis_create_array = reader.fn->createArray;
-    redisReplyObjectFunctions f = *reader.fn;
-    f.createArray = create_bounded_array;
-    return f;
-  }();
-  reader.fn = &functions;
-  reader.privdata = refused;
-}
-
 std::string ms(std::chrono::milliseconds d) {
   return std::to_string(d.count());
 }
@@ -78,68 +29,67 @@ std::string ms(std::chrono::milliseconds d) {
 }  // namespace
 
 std::optional<RedisReply> parse_reply(std::string_view wire) {
-  const std::unique_ptr<redisReader, void (*)(redisReader*)> reader(redisReaderCreate(), redisReaderFree);
-  if (!reader) return std::nullopt;
-  bound_arrays(*reader, nullptr);
+  const RedisReaderPtr reader = bounded_reader(nullptr);
   if (redisReaderFeed(reader.get(), wire.data(), wire.size()) != REDIS_OK) return std::nullopt;
   void* raw = nullptr;
   if (redisReaderGetReply(reader.get(), &raw) != REDIS_OK || !raw) return std::nullopt;
-  const std::unique_ptr<redisReply, void (*)(void*)> reply(static_cast<redisReply*>(raw), freeReplyObject);
-  return copy(*reply);
+  const RedisReplyPtr reply(static_cast<redisReply*>(raw), freeReplyObject);
+  return copy_reply(*reply);
 }
 
 RedisClient::RedisClient(RedisAddress address, std::chrono::milliseconds retry_for)
-    : address_(std::move(address)), retry_for_(retry_for), context_(nullptr, redisFree) {}
+    : address_(std::move(address)), retry_for_(retry_for) {}
 
 RedisClient::~RedisClient() = default;
 
+// Opens the connection and logs in: AUTH [USER] PASSWORD, SELECT DB.
 void RedisClient::connect() {
-  context_.reset(redisConnectWithTimeout(address_.host.c_str(), address_.port, to_timeval(kConnectTimeout)));
-  if (!context_) throw RedisError("cannot allocate a Redis connection");
-  if (context_->err) {
-    const std::string why = context_->errstr;
-    context_.reset();
-    throw RedisError(fmt::format("cannot connect to {}: {}", address_.url(), why));
+  if (address_.tls && !tls_) tls_ = make_tls_context(address_.tls_files);
+  auto connection = std::make_unique<RedisConnection>(address_, tls_, kConnectTimeout, kCommandTimeout);
+  const auto login = [&](const std::vector<std::string_view>& args, const std::string& what) {
+    const RedisReplyPtr reply = connection->exchange(args);
+    if (!reply)
+      throw RedisError(fmt::format("cannot {} at {}: {}", what, address_.url(), connection->failure()));
+    if (reply->type == REDIS_REPLY_ERROR)
+      throw RedisRefusal(
+          fmt::format("{} refused by {}: {}", what, address_.url(), std::string(reply->str, reply->len)));
+  };
+  if (address_.password) {
+    if (address_.user.empty())
+      login({"AUTH", *address_.password}, "AUTH");
+    else
+      login({"AUTH", address_.user, *address_.password}, "AUTH as user " + address_.user);
   }
-  redisSetTimeout(context_.get(), to_timeval(kCommandTimeout));
-  redisEnableKeepAlive(context_.get());
-  bound_arrays(*context_->reader, &refused_elements_);
+  if (address_.db != 0)
+    login({"SELECT", std::to_string(address_.db)}, "SELECT " + std::to_string(address_.db));
+  connection_ = std::move(connection);
 }
 
 // The reply on the open connection, nullopt when the connection failed (then dropped); throws
 // RedisError for an error reply other than LOADING (Redis reading its append-only file after a restart:
-// try again), and for an array over the bound (the connection dropped).
+// try again), and RedisRefusal for an array over the bound (the connection dropped).
 std::optional<RedisReply> RedisClient::try_command(const std::vector<std::string_view>& args) {
   const std::string_view name = args.empty() ? "" : args[0];
-  std::vector<const char*> argv;
-  std::vector<size_t> lengths;
-  for (const auto a : args) {
-    argv.push_back(a.data());
-    lengths.push_back(a.size());
-  }
-  refused_elements_ = 0;
-  auto* raw = static_cast<redisReply*>(
-      redisCommandArgv(context_.get(), int(argv.size()), argv.data(), lengths.data()));
-  if (!raw && refused_elements_ > 0) {
-    context_.reset();  // the rest of the reply is unread
-    const std::string what =
-        fmt::format("redis {}: {} answered an array of {} elements, over the bound of {}; connection dropped",
-                    name, address_.url(), refused_elements_, kMaxRedisArrayElements);
+  RedisReplyPtr reply(nullptr, freeReplyObject);
+  try {
+    reply = connection_->exchange(args);
+  } catch (const RedisRefusal& e) {
+    connection_.reset();  // the rest of the reply is unread
+    const std::string what = fmt::format("redis {}: {}; connection dropped", name, e.what());
     spdlog::warn("{}", what);
-    throw RedisError(what);
+    throw RedisRefusal(what);
   }
-  if (!raw) {
-    spdlog::debug("redis {}: {}", address_.url(), context_->errstr);
-    context_.reset();
+  if (!reply) {
+    spdlog::debug("redis {}: {}", address_.url(), connection_->failure());
+    connection_.reset();
     return std::nullopt;
   }
-  const std::unique_ptr<redisReply, void (*)(void*)> reply(raw, freeReplyObject);
   if (reply->type == REDIS_REPLY_ERROR) {
     const std::string message(reply->str, reply->len);
     if (message.starts_with("LOADING")) return std::nullopt;
     throw RedisError(fmt::format("redis {}: {}", name, message));
   }
-  return copy(*reply);
+  return copy_reply(*reply);
 }
 
 RedisReply RedisClient::command(const std::vector<std::string_view>& args) {
@@ -149,11 +99,13 @@ RedisReply RedisClient::command(const std::vector<std::string_view>& args) {
   std::string last_failure = "no answer";
   for (;;) {
     try {
-      if (!context_) connect();
+      if (!connection_) connect();
+    } catch (const RedisRefusal&) {
+      throw;
     } catch (const RedisError& e) {
       last_failure = e.what();
     }
-    if (context_)
+    if (connection_)
       if (auto reply = try_command(args)) return std::move(*reply);
     if (Clock::now() + backoff > deadline)
       throw RedisError(fmt::format("redis {} unreachable for {} s: {}", address_.url(),
@@ -256,6 +208,18 @@ std::vector<StreamEntry> RedisClient::xrange(std::string_view key) {
 
 std::vector<std::string> RedisClient::xpending(std::string_view key, std::string_view group, int64_t count) {
   return pending_ids(command({"XPENDING", key, group, "-", "+", std::to_string(count)}));
+}
+
+std::vector<PendingItem> RedisClient::xpending_idle(std::string_view key, std::string_view group,
+                                                    std::chrono::milliseconds min_idle, int64_t count) {
+  return pending_items(
+      command({"XPENDING", key, group, "IDLE", ms(min_idle), "-", "+", std::to_string(count)}));
+}
+
+std::vector<StreamEntry> RedisClient::xclaim(std::string_view key, std::string_view group,
+                                             std::string_view consumer, std::chrono::milliseconds min_idle,
+                                             std::string_view id) {
+  return range_entries(std::string(key), command({"XCLAIM", key, group, consumer, ms(min_idle), id}));
 }
 
 std::optional<std::string> RedisClient::xgroup_last_delivered(std::string_view key, std::string_view group) {

@@ -1,15 +1,15 @@
 #pragma once
-// A connection to Redis over hiredis, with the commands a render split over machines needs. A lost
+// A connection to Redis (redis_connection.hpp), with the commands a render split over machines needs. A lost
 // connection (Redis restarting, a network blip) is opened again with backoff (0.1 s doubling to 2 s) and
 // the command sent again, for up to `retry_for`; then RedisError. Commands that may run twice this way are
 // harmless twice in how they are used (a partial is keyed by its range, notices are deduplicated).
 // Thread-safe (one command at a time).
 //
-// hiredis allocates an array's table of element pointers from the array's header, before any element
-// arrives, so a header of a few bytes could ask for gigabytes. Every reader here (a connection's, and
-// parse_reply's) refuses an array of more than kMaxRedisArrayElements before that. A command answered
-// so throws RedisError at once, naming the count, the bound and the server, and its connection is
-// dropped (the rest of the reply is unread); it is not retried, as the same server would answer the same.
+// AUTH (with the user when there is one) and SELECT of the database run on every connection, the first
+// and every one opened again. A failure that trying again would not cure (RedisRefusal: a certificate, a
+// password or a database refused, an array over kMaxRedisArrayElements) is thrown at once, naming the
+// server (never its password); a command answered with an array over the bound drops its connection (the
+// rest of the reply is unread).
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -20,27 +20,11 @@
 #include <utility>
 #include <vector>
 
+#include "server/scale_out/redis_connection.hpp"
 #include "server/scale_out/redis_reply.hpp"
 #include "server/scale_out/redis_url.hpp"
 
-struct redisContext;
-
 namespace lp::server {
-
-// The most elements an array in a reply may have. The largest the commands below get back are a
-// render's items stream (XRANGE, read in pages of a sixteenth of this: a render can have 16 M items,
-// --max-render-spp over --redis-item-spp), its notices since the last read (XREAD, every half second),
-// the renders with items out (SMEMBERS: a few per server) and the items workers hold (XPENDING;
-// XREADGROUP and XAUTOCLAIM ask for one). 1 M is far above each, and keeps a table at 8 MB of pointers
-// whatever the server answers (64 MB for tables nested the 8 levels deep hiredis allows).
-inline constexpr int kMaxRedisArrayElements = 1 << 20;
-
-// Redis could not be reached for `retry_for`, answered a command with an error, or with an array over
-// kMaxRedisArrayElements.
-class RedisError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // The first reply in `wire`, bytes of the Redis protocol read as a connection reads them; nullopt when
 // they hold no whole reply or are no such bytes, or when an array's count exceeds
@@ -79,6 +63,14 @@ class RedisClient {
   std::vector<StreamEntry> xrange(std::string_view key);
   // The ids of up to `count` entries delivered to the group's consumers and not acknowledged.
   std::vector<std::string> xpending(std::string_view key, std::string_view group, int64_t count);
+  // Up to `count` entries delivered to the group's consumers, not acknowledged and idle for `min_idle`
+  // (XPENDING key group IDLE min_idle - + count), with their consumers.
+  std::vector<PendingItem> xpending_idle(std::string_view key, std::string_view group,
+                                         std::chrono::milliseconds min_idle, int64_t count);
+  // XCLAIM key group consumer min_idle id: the entry, if it was still idle for `min_idle` (no other
+  // consumer claimed it first) and is still in the stream.
+  std::vector<StreamEntry> xclaim(std::string_view key, std::string_view group, std::string_view consumer,
+                                  std::chrono::milliseconds min_idle, std::string_view id);
   // The id of the last entry the group delivered; nullopt when the stream or the group is gone.
   std::optional<std::string> xgroup_last_delivered(std::string_view key, std::string_view group);
   // XREADGROUP GROUP group consumer COUNT 1 BLOCK block STREAMS keys... > ...
@@ -93,14 +85,14 @@ class RedisClient {
                                       std::chrono::milliseconds min_idle);
 
  private:
-  void connect();  // throws RedisError
+  void connect();  // throws RedisError, or RedisRefusal for a refused login
   std::optional<RedisReply> try_command(const std::vector<std::string_view>& args);
 
   const RedisAddress address_;
   const std::chrono::milliseconds retry_for_;
   std::mutex mutex_;
-  std::unique_ptr<redisContext, void (*)(redisContext*)> context_;
-  int refused_elements_ = 0;  // the count of the array the connection's reader refused, if it did
+  TlsContext tls_;  // for rediss://, made at the first connection
+  std::unique_ptr<RedisConnection> connection_;
 };
 
 }  // namespace lp::server

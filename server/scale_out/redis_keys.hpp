@@ -6,6 +6,7 @@
 //   lightprobe:render:ID:partials hash of the partial films that arrived, by range
 //   lightprobe:render:ID:done     stream of notices {range, rays} or {range, error} from workers
 //   lightprobe:render:ID:cancel   set when the render is cancelled; workers check it between tiles
+//   lightprobe:worker:NAME        a worker's heartbeat, set while it lives (worker_heartbeat.hpp)
 #include <charconv>
 #include <optional>
 #include <string>
@@ -36,6 +37,10 @@ inline std::string done(const std::string& id) {
 }
 inline std::string cancel(const std::string& id) {
   return key(id, "cancel");
+}
+
+inline std::string heartbeat(const std::string& consumer) {
+  return "lightprobe:worker:" + consumer;
 }
 
 // The render id of an items stream's key; empty if it is not one.

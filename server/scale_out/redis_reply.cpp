@@ -67,6 +67,14 @@ std::vector<std::string> pending_ids(const RedisReply& reply) {
   return out;
 }
 
+std::vector<PendingItem> pending_items(const RedisReply& reply) {
+  std::vector<PendingItem> out;
+  for (const RedisReply& r : reply.elements)
+    if (r.type == RedisReply::Type::Array && r.elements.size() >= 2)
+      out.push_back({r.elements[0].text, r.elements[1].text});
+  return out;
+}
+
 std::optional<std::string> group_field(const RedisReply& reply, const std::string& group,
                                        const std::string& field) {
   for (const RedisReply& g : reply.elements) {

@@ -38,6 +38,12 @@ std::vector<StreamEntry> claimed_entries(const std::string& stream, const RedisR
 std::vector<StreamEntry> range_entries(const std::string& stream, const RedisReply& reply);
 // [[id, consumer, idle, deliveries], ...] (XPENDING key group - + count): the ids.
 std::vector<std::string> pending_ids(const RedisReply& reply);
+// [[id, consumer, idle, deliveries], ...] (XPENDING): each id with the consumer holding it.
+struct PendingItem {
+  std::string id;
+  std::string consumer;
+};
+std::vector<PendingItem> pending_items(const RedisReply& reply);
 // [[name, value, ...], ...] (XINFO GROUPS): the value of `field` in the group named `group`, as text.
 std::optional<std::string> group_field(const RedisReply& reply, const std::string& group,
                                        const std::string& field);

@@ -23,12 +23,23 @@ inline constexpr api::IntParameter kRedisClaimTimeoutS{
     {1, 86400},
     "seconds a worker may hold a work item before another worker takes it over (a worker\nthat died)"};
 
+// The variable that gives --redis its password (kept off the command line, where every user sees it).
+inline constexpr const char* kRedisPasswordVariable = "LIGHTPROBE_REDIS_PASSWORD";
+
 struct ScaleOutConfig {
   std::optional<RedisAddress> redis;  // --redis; none: renders run in this process
+  std::string redis_password_file;    // --redis-password-file
+  RedisTlsFiles redis_tls;            // --redis-tls-ca, --redis-tls-cert, --redis-tls-key
   ServerRole role = ServerRole::Both;
   std::string advertise_url;  // where workers fetch maps from this server; empty: http://--host:port
   int item_spp = int(kRedisItemSpp.fallback);
   int claim_timeout_s = int(kRedisClaimTimeoutS.fallback);
 };
+
+// Gives --redis its password (from the URL, --redis-password-file or `password_variable`, the value of
+// kRedisPasswordVariable: one of them) and its TLS files. Throws std::invalid_argument for a password
+// given twice or a file that cannot be read, for these flags without --redis, and for TLS files without
+// rediss://. No message holds the password.
+void complete_redis(ScaleOutConfig& config, const std::optional<std::string>& password_variable);
 
 }  // namespace lp::server

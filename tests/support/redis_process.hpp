@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "support/temp_dir.hpp"
 
@@ -17,15 +18,32 @@ std::optional<std::filesystem::path> redis_server_binary();
   if (!::lp::test::redis_server_binary()) \
   GTEST_SKIP() << "redis-server is not installed (scripts/setup --test installs it)"
 
+// A CA and a server certificate it signed (for 127.0.0.1 and localhost), PEM files made by the openssl
+// command in `dir`.
+struct TlsFiles {
+  std::filesystem::path ca_cert, server_cert, server_key;
+};
+TlsFiles make_tls_files(const std::filesystem::path& dir);
+
+struct RedisSetup {
+  bool tls = false;
+  std::vector<std::string> args;  // more redis-server flags, e.g. {"--requirepass", "secret"}
+};
+
 class RedisProcess {
  public:
-  RedisProcess();  // throws std::runtime_error if it does not answer PING within 10 s
+  // Throws std::runtime_error if it does not answer within 10 s.
+  explicit RedisProcess(RedisSetup setup = {});
   ~RedisProcess();
   RedisProcess(const RedisProcess&) = delete;
   RedisProcess& operator=(const RedisProcess&) = delete;
 
   int port() const { return port_; }
-  std::string url() const { return "redis://127.0.0.1:" + std::to_string(port_); }
+  std::string url() const {
+    return (setup_.tls ? "rediss://" : "redis://") + std::string("127.0.0.1:") + std::to_string(port_);
+  }
+  const TlsFiles& tls_files() const { return tls_; }  // with RedisSetup::tls
+  std::string log() const;                            // redis-server's own log
   void stop();
   void start();
   void restart() {
@@ -37,6 +55,8 @@ class RedisProcess {
 
  private:
   TempDir dir_;
+  RedisSetup setup_;
+  TlsFiles tls_;
   int port_ = 0;
   int pid_ = -1;
 };

@@ -111,7 +111,7 @@ TEST(RedisClient, ReadsTheMembersOfASet) {
 // dropped and the next command opens another.
 TEST(RedisClient, AnArrayOverTheBoundIsRefusedAtOnceNamingIt) {
   FakeRedis fake({"*344444444\r\n", "*2\r\n$2\r\nr1\r\n$2\r\nr2\r\n"});
-  RedisClient client({"127.0.0.1", fake.port()}, 10s);
+  RedisClient client(parse_redis_url("redis://127.0.0.1:" + std::to_string(fake.port())), 10s);
   std::string message;
   try {
     client.smembers("renders");
@@ -127,7 +127,7 @@ TEST(RedisClient, AnArrayOverTheBoundIsRefusedAtOnceNamingIt) {
 
 TEST(RedisClient, ANestedArrayOverTheBoundIsRefusedToo) {
   FakeRedis fake({"*2\r\n:1\r\n*1048577\r\n"});
-  RedisClient client({"127.0.0.1", fake.port()}, 10s);
+  RedisClient client(parse_redis_url("redis://127.0.0.1:" + std::to_string(fake.port())), 10s);
   try {
     client.command({"XINFO", "GROUPS", "items"});
     ADD_FAILURE() << "no RedisError";
