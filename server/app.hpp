@@ -13,6 +13,7 @@
 #include "server/options.hpp"
 #include "server/renders/render_counters.hpp"
 #include "server/scale_out/mesh_bundles.hpp"
+#include "server/scale_out/scale_out_counters.hpp"
 #include "server/storage/state_store.hpp"
 
 namespace lp::server {
@@ -46,15 +47,16 @@ struct App {
   MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
-  AssetRegistry assets;               // model files uploaded for scenes (assets/stored_assets.hpp)
-  ModelCache models;                  // the models of scenes' mesh objects, loaded when a request names them
-  MeshBundles bundles;                // the models' files, for the workers of split renders (--redis)
-  std::unique_ptr<StateStore> state;  // null: nothing is kept across restarts
-  std::atomic<int> event_streams{0};  // render event streams open now
-  std::atomic<bool> ready{false};     // the maps to load at start and the state directory are loaded
-  HttpMetrics http_metrics;           // requests answered (GET /metrics)
-  RenderCounters render_counters;     // what renders traced (GET /metrics)
-  JobManager prefilters;              // prefiltered specular chains (routes/prefilter.cpp)
+  AssetRegistry assets;  // model files uploaded for scenes (assets/stored_assets.hpp)
+  ModelCache models;     // the models of scenes' mesh objects, loaded when a request names them
+  MeshBundles bundles;   // the models' files, for the workers of split renders (--redis)
+  ScaleOutCounters scale_out_counters;  // split renders' work items, for /metrics
+  std::unique_ptr<StateStore> state;    // null: nothing is kept across restarts
+  std::atomic<int> event_streams{0};    // render event streams open now
+  std::atomic<bool> ready{false};       // the maps to load at start and the state directory are loaded
+  HttpMetrics http_metrics;             // requests answered (GET /metrics)
+  RenderCounters render_counters;       // what renders traced (GET /metrics)
+  JobManager prefilters;                // prefiltered specular chains (routes/prefilter.cpp)
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)

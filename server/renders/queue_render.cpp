@@ -10,7 +10,7 @@ QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest requ
   const auto& s = request.settings;
   RenderJobContext context{app.state.get(), &app.render_counters,
                            reserve_render(app.memory, s.width, s.height, triangles),
-                           scale_out(app.options.scale_out, app.bundles)};
+                           scale_out(app.options.scale_out, app.bundles, app.scale_out_counters)};
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), std::move(envmap),
                                          std::move(image), std::move(context));
   QueuedRender queued{job, job->status_json()};

@@ -34,6 +34,7 @@ void RenderCoordinator::publish(const std::vector<render::SampleRange>& items) {
   for (const auto& r : items)
     redis_.xadd(keys::items(id_), {{"first", std::to_string(r.first)}, {"end", std::to_string(r.end)}});
   redis_.sadd(keys::kActive, id_);
+  scale_out_.counters->published.fetch_add(items.size(), std::memory_order_relaxed);
 }
 
 void RenderCoordinator::withdraw() {
@@ -52,6 +53,8 @@ bool RenderCoordinator::merge(const std::string& range, Merged& merged, const On
     throw std::runtime_error("a partial film under another range");
   merged.film.merge(partial.film);
   merged.ranges.insert(range);
+  scale_out_.counters->merged.fetch_add(1, std::memory_order_relaxed);
+  scale_out_.counters->outstanding.fetch_sub(1, std::memory_order_relaxed);
   redis_.hdel(keys::partials(id_), range);
   on_merged(merged.film, partial.range, partial.rays);
   return true;
@@ -98,6 +101,7 @@ void RenderCoordinator::restore(const std::vector<render::SampleRange>& items, M
     if (merged.ranges.contains(range) || in_flight.contains(range) || merge(range, merged, on_merged))
       continue;
     redis_.xadd(stream, {{"first", std::to_string(r.first)}, {"end", std::to_string(r.end)}});
+    scale_out_.counters->published.fetch_add(1, std::memory_order_relaxed);
     spdlog::warn("render {}: Redis lost samples {}; issued again", id_, range);
   }
 }
@@ -111,6 +115,15 @@ bool RenderCoordinator::run(const RenderDescription& description,
                scale_out_.redis.url());
   Merged merged;
   merged.film = std::move(film);
+  // Outstanding while this run lasts, however it ends (merged ones leave the count as they arrive).
+  auto& outstanding = scale_out_.counters->outstanding;
+  outstanding.fetch_add(int64_t(items.size()), std::memory_order_relaxed);
+  const struct Settle {
+    std::atomic<int64_t>& count;
+    const Merged& merged;
+    const size_t items;
+    ~Settle() { count.fetch_sub(int64_t(items - merged.ranges.size()), std::memory_order_relaxed); }
+  } settle{outstanding, merged, items.size()};
   auto next_restore = Clock::now() + kRestoreEvery;
   while (merged.ranges.size() < items.size()) {
     if (stop()) {

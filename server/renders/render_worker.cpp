@@ -112,10 +112,12 @@ std::optional<StreamEntry> RenderWorker::next_item() {
       for (auto& entry : redis_.xclaim(stream, keys::kGroup, consumer_, kHeartbeatLifetime, orphan)) {
         spdlog::info("worker {}: took over item {} of {} from a worker without a heartbeat", consumer_,
                      entry.id, stream);
+        app_.scale_out_counters.taken_over.fetch_add(1, std::memory_order_relaxed);
         return std::move(entry);
       }
     for (auto& entry : redis_.xautoclaim(stream, keys::kGroup, consumer_, claim_after)) {
       spdlog::info("worker {}: took over item {} of {}", consumer_, entry.id, stream);
+      app_.scale_out_counters.taken_over.fetch_add(1, std::memory_order_relaxed);
       return std::move(entry);
     }
   }
@@ -165,6 +167,7 @@ bool RenderWorker::render(const std::string& id, render::SampleRange range, cons
               std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   redis_.expire(keys::partials(id), kPartialLifetimeS);  // a duplicate after the render ended goes too
   redis_.xadd(keys::done(id), {{"range", field}, {"rays", std::to_string(partial->rays)}});
+  app_.scale_out_counters.rendered.fetch_add(1, std::memory_order_relaxed);
   spdlog::info("worker {}: render {} samples {} done in {:.3f} s", consumer_, id, field,
                std::chrono::duration<double>(Clock::now() - start).count());
   return true;

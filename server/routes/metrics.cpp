@@ -1,5 +1,8 @@
 // GET /metrics: the server's figures in the Prometheus text format (observability/prometheus_text.hpp).
+#include <spdlog/spdlog.h>
+
 #include <array>
+#include <chrono>
 #include <map>
 #include <utility>
 
@@ -7,9 +10,13 @@
 #include "server/observability/process_stats.hpp"
 #include "server/observability/prometheus_text.hpp"
 #include "server/routes/routes.hpp"
+#include "server/scale_out/worker_heartbeat.hpp"
 
 namespace lp::server {
 namespace {
+
+// How long a scrape waits for Redis to count the workers.
+constexpr std::chrono::milliseconds kMetricsRedisPatience{500};
 
 void write_envmaps(const App& app, PrometheusText& out) {
   const auto maps = app.envmaps.list();
@@ -51,6 +58,35 @@ void write_renders(const App& app, PrometheusText& out) {
              "Seconds renders spent in passes, summed over the renders running at once; samples_total / "
              "seconds_total is the rate of one render.");
   out.sample("lightprobe_render_seconds_total", {}, c.seconds.load());
+}
+
+// Split renders' work items as this server saw them, and the workers alive on its Redis (asked at the
+// scrape, with a short patience: a Redis out of reach leaves the family without a sample).
+void write_scale_out(const App& app, PrometheusText& out) {
+  if (!app.options.scale_out.redis) return;
+  const ScaleOutCounters& c = app.scale_out_counters;
+  const auto counter = [&out](const char* name, const char* help, double value) {
+    out.family(name, "counter", help);
+    out.sample(name, {}, value);
+  };
+  counter("lightprobe_redis_items_published_total", "Work items this server's renders put on Redis.",
+          double(c.published.load()));
+  counter("lightprobe_redis_items_merged_total", "Work items whose partial film this server merged.",
+          double(c.merged.load()));
+  counter("lightprobe_redis_items_rendered_total", "Work items this server rendered as a worker.",
+          double(c.rendered.load()));
+  counter("lightprobe_redis_items_taken_over_total",
+          "Work items this worker took from another that died or stalled.", double(c.taken_over.load()));
+  out.family("lightprobe_redis_items_outstanding", "gauge",
+             "Work items of this server's running renders not merged yet.");
+  out.sample("lightprobe_redis_items_outstanding", {}, double(c.outstanding.load()));
+  out.family("lightprobe_redis_workers", "gauge", "Workers with a live heartbeat on this server's Redis.");
+  try {
+    RedisClient redis(*app.options.scale_out.redis, kMetricsRedisPatience);
+    out.sample("lightprobe_redis_workers", {}, double(live_workers(redis)));
+  } catch (const RedisError& e) {
+    spdlog::warn("metrics: cannot count the workers: {}", e.what());
+  }
 }
 
 void write_memory(const App& app, PrometheusText& out) {
@@ -102,6 +138,7 @@ void register_metrics_routes(Router& router, App& app) {
     write_envmaps(app, out);
     write_renders(app, out);
     write_memory(app, out);
+    write_scale_out(app, out);
     write_process(out);
     res.set_content(out.text(), kPrometheusContentType);
   });

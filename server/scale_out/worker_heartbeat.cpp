@@ -52,6 +52,19 @@ void WorkerHeartbeat::beat() {
   redis_.command({"SET", key_, "1", "PX", std::to_string(kHeartbeatLifetime.count())});
 }
 
+int64_t live_workers(RedisClient& redis) {
+  const std::string pattern = render_keys::heartbeat("*");
+  int64_t workers = 0;
+  std::string cursor = "0";
+  do {  // SCAN, not KEYS: a Redis with many keys is not held up
+    const RedisReply page = redis.command({"SCAN", cursor, "MATCH", pattern, "COUNT", "1000"});
+    if (page.type != RedisReply::Type::Array || page.elements.size() != 2) break;
+    cursor = page.elements[0].text;
+    workers += int64_t(page.elements[1].elements.size());
+  } while (cursor != "0");
+  return workers;
+}
+
 std::vector<std::string> orphaned_items(RedisClient& redis, const std::string& stream,
                                         const std::string& group) {
   std::map<std::string, bool> alive;

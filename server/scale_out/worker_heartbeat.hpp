@@ -30,6 +30,9 @@ class WorkerHeartbeat {
   std::jthread thread_;
 };
 
+// The workers with a live heartbeat on this Redis.
+int64_t live_workers(RedisClient& redis);
+
 // The items of the stream's group held for kHeartbeatLifetime or more by consumers without a heartbeat:
 // the items of workers that died.
 std::vector<std::string> orphaned_items(RedisClient& redis, const std::string& stream,

@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -134,6 +135,15 @@ struct Cluster {
   }
 };
 
+// A sample without labels of the server's /metrics; -1 if it has none.
+double metric(const test::ServerProcess& s, const std::string& name) {
+  const auto r = s.client()->Get("/metrics");
+  if (!r || r->status != 200) return -1;
+  std::smatch m;
+  if (!std::regex_search(r->body, m, std::regex("\n" + name + " ([-0-9.e+]+)\n"))) return -1;
+  return std::stod(m[1]);
+}
+
 TEST(RedisScaleOut, ThreeWorkersGiveTheImageOfOneProcess) {
   SKIP_WITHOUT_REDIS();
   const std::string request = body(48, 7);
@@ -151,6 +161,14 @@ TEST(RedisScaleOut, ThreeWorkersGiveTheImageOfOneProcess) {
   }
   EXPECT_GE(working, 2) << "one worker took every item";
   EXPECT_GE(items, 2 * 12);  // 12 items, each started and done
+  // The api server's and the workers' metrics tell the same: 12 items out and merged, 3 workers alive.
+  EXPECT_EQ(metric(*cluster.api, "lightprobe_redis_items_published_total"), 12);
+  EXPECT_EQ(metric(*cluster.api, "lightprobe_redis_items_merged_total"), 12);
+  EXPECT_EQ(metric(*cluster.api, "lightprobe_redis_items_outstanding"), 0);
+  EXPECT_EQ(metric(*cluster.api, "lightprobe_redis_workers"), 3);
+  double rendered = 0;
+  for (const auto& w : cluster.workers) rendered += metric(*w, "lightprobe_redis_items_rendered_total");
+  EXPECT_GE(rendered, 12);
   EXPECT_EQ(count_lines(cluster.api->log(), "fetched map"), 0);
   for (const auto& w : cluster.workers) EXPECT_EQ(count_lines(w->log(), "fetched map"), 0);  // all hold it
 }
@@ -205,12 +223,13 @@ TEST(RedisScaleOut, TheComposeFilesCommandsRenderAJobOverThreeWorkers) {
 // The killed worker's heartbeat (a key that lives 3 s unless refreshed every second) ends, and the other
 // worker takes its item then, not after the claim timeout (the default 30 s). Bound: the heartbeat's 3 s,
 // a second's wait for new items and the rest of the item the other worker renders meanwhile, with margin.
+// The claim timeout is an hour here, so only the dead worker's missing heartbeat can hand its item on
+// within the test's wait; the time it took is printed (a few seconds: the heartbeat's lifetime).
 TEST(RedisScaleOut, AWorkerKilledMidItemLeavesItToAnotherWithinSeconds) {
   SKIP_WITHOUT_REDIS();
-  constexpr auto kTakeOverBound = 10s;
   const std::string request = body(64, 11);
   const Image reference = single_process_image(request);
-  Cluster cluster(2, 16);
+  Cluster cluster(2, 16, 3600);
   const std::string id = submit(*cluster.api, request);
   auto& victim = *cluster.workers[0];
   ASSERT_TRUE(victim.wait_log("render " + id + " samples")) << victim.log();
@@ -223,7 +242,8 @@ TEST(RedisScaleOut, AWorkerKilledMidItemLeavesItToAnotherWithinSeconds) {
   const std::chrono::duration<double> finished = std::chrono::steady_clock::now() - killed;
   std::cout << "kill to take-over " << taken_over.count() << " s, to the render done " << finished.count()
             << " s\n";
-  EXPECT_LT(taken_over, kTakeOverBound);
+  EXPECT_GE(metric(*cluster.workers[1], "lightprobe_redis_items_taken_over_total"), 1);
+  EXPECT_EQ(metric(*cluster.api, "lightprobe_redis_workers"), 1);
   expect_whole(st, 64);
   EXPECT_LT(max_relative_difference(reference, image(*cluster.api, id)), 1e-5);
 }
