@@ -41,6 +41,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{EnvmapMissing, 409, "envmap_missing", {}},
     ErrorCodeEntry{EnvmapChanged, 409, "envmap_changed", {}},
     ErrorCodeEntry{WorkerOnly, 409, "worker_only", {}},
+    ErrorCodeEntry{TooManyJobs, 429, "too_many_jobs", {}},
     ErrorCodeEntry{QueueFull, 503, "queue_full", {}},
     ErrorCodeEntry{TooManyStreams, 503, "too_many_streams", {}},
     ErrorCodeEntry{TooManyConnections, 503, "too_many_connections", {}},
