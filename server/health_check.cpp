@@ -27,8 +27,18 @@ HealthCheckTarget parse_health_check_url(const std::string& url) {
   return target;
 }
 
-int run_health_check(const std::string& url) {
-  const HealthCheckTarget target = parse_health_check_url(url);
+HealthCheckTarget health_check_target(const std::string& argument, const std::string& host, int port) {
+  if (!argument.starts_with('/')) return parse_health_check_url(argument);
+  if (port == 0)
+    throw std::invalid_argument(fmt::format("--health-check {} needs the server's --port, not 0", argument));
+  const std::string local = host == "0.0.0.0" || host.empty() ? "127.0.0.1" : host == "::" ? "::1" : host;
+  return {local, port, argument};
+}
+
+int run_health_check(const HealthCheckTarget& target) {
+  const bool v6 = target.host.find(':') != std::string::npos;
+  const std::string url = fmt::format("http://{}{}{}:{}{}", v6 ? "[" : "", target.host, v6 ? "]" : "",
+                                      target.port, target.path);
   httplib::Client client(target.host, target.port);
   const auto timeout = std::chrono::duration_cast<std::chrono::seconds>(kHealthCheckTimeout).count();
   client.set_connection_timeout(timeout);

@@ -117,7 +117,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (!options) return 0;
-  if (!options->health_check_url.empty()) return lp::server::run_health_check(options->health_check_url);
+  if (!options->health_check_url.empty()) {
+    try {
+      return lp::server::run_health_check(
+          lp::server::health_check_target(options->health_check_url, options->host, options->port));
+    } catch (const std::exception& e) {
+      std::cerr << "lightprobe-server: " << e.what() << "\n";
+      return 2;
+    }
+  }
   lp::server::Logging logging(options->log.level, options->log.format);
   // Render arenas run on workers alone (jobs/job_arena.hpp): the limit counts them and one caller.
   const tbb::global_control threads(

@@ -24,7 +24,8 @@ Usage: lightprobe-server [options]
 constexpr const char* kActions =
     R"(  --list-routes          print every registered route (METHOD PATH) and exit
   --health-check URL     GET the URL (http://HOST[:PORT]/PATH) with a {health_timeout} s timeout and exit:
-                         0 if it answers 200, 1 otherwise (a container's HEALTHCHECK)
+                         0 if it answers 200, 1 otherwise (a container's HEALTHCHECK); a PATH alone
+                         (/api/v1/ready) probes this configuration's --host and --port
   --version              print the version and exit
   --help                 print this help and exit
 )";
@@ -256,7 +257,7 @@ std::optional<Options> parse_options(int argc, char** argv, Options defaults,
       {{"--health-check"},
        true,
        [&o](const std::string& url) {
-         parse_health_check_url(url);  // a malformed URL is a bad flag
+         if (!url.starts_with('/')) parse_health_check_url(url);  // a malformed URL is a bad flag
          o.health_check_url = url;
          return true;
        }},

@@ -55,7 +55,7 @@ struct Options {
   bool resume_interrupted = false;                         // resume interrupted renders at start
   int shutdown_grace_s = int(kShutdownGraceS.fallback);
   bool list_routes = false;      // print "METHOD PATH" per registered route and exit
-  std::string health_check_url;  // --health-check: probe this URL and exit (health_check.hpp)
+  std::string health_check_url;  // --health-check: probe this URL or PATH and exit (health_check.hpp)
 
   // The subsystems'.
   BrowserPolicyConfig browser;  // --allowed-host, --cors-origin

@@ -239,6 +239,7 @@ bool HttpTransport::serve_requests(Connection& c) {
     const bool close = stopping_ || c.served + 1 >= keep_alive_max_count_;
     bool closed = false;
     const bool answered = process_request(c.stream, close, closed, {}) && c.stream.flush();
+    end_request_context();
     if (c.proxy) connections_.end_request(client);
     ++c.served;
     c.started.reset();

@@ -25,7 +25,11 @@ struct RequestContext {
 
 // The request of this thread.
 RequestContext& current_request();
-// Starts the context of a new request on this thread (its clock starts now).
+// Starts the context of a new request on this thread (its clock starts now), and counts it in flight
+// until end_request_context().
 void begin_request_context(std::string accept_encoding, std::string client);
+void end_request_context();
+// Requests begun and not yet answered, in the whole process.
+int64_t requests_in_flight();
 
 }  // namespace lp::server

@@ -3,6 +3,7 @@
 #include <map>
 #include <utility>
 
+#include "server/http/request_context.hpp"
 #include "server/observability/process_stats.hpp"
 #include "server/observability/prometheus_text.hpp"
 #include "server/routes/routes.hpp"
@@ -21,13 +22,21 @@ void write_envmaps(const App& app, PrometheusText& out) {
   out.sample("lightprobe_envmap_bytes", {}, double(bytes));
 }
 
-void write_renders(const App& app, PrometheusText& out) {
+// A family of jobs by state, every state present.
+void write_jobs(const JobManager& jobs, const std::string& name, const std::string& help,
+                PrometheusText& out) {
   std::map<JobStatus, int> by_state;
-  for (const auto& job : app.renders.list()) ++by_state[job->status()];
-  out.family("lightprobe_render_jobs", "gauge",
-             "Render jobs by state (finished ones as --max-finished-jobs keeps them).");
+  for (const auto& job : jobs.list()) ++by_state[job->status()];
+  out.family(name, "gauge", help);
   for (const auto& e : enum_entries(JobStatus{}))
-    out.sample("lightprobe_render_jobs", {{"state", e.name}}, double(by_state[e.value]));
+    out.sample(name, {{"state", e.name}}, double(by_state[e.value]));
+}
+
+void write_renders(const App& app, PrometheusText& out) {
+  write_jobs(app.renders, "lightprobe_render_jobs",
+             "Render jobs by state (finished ones as --max-finished-jobs keeps them).", out);
+  write_jobs(app.prefilters, "lightprobe_prefilter_jobs",
+             "Prefiltered-chain jobs by state (finished ones as --max-finished-jobs keeps them).", out);
   out.family("lightprobe_render_queue_depth", "gauge", "Renders waiting for a runner (--max-queued-jobs).");
   out.sample("lightprobe_render_queue_depth", {}, double(app.renders.queued_count()));
   const RenderCounters& c = app.render_counters;
@@ -52,8 +61,23 @@ void write_memory(const App& app, PrometheusText& out) {
       {{MemoryUse::Held, "held"}, {MemoryUse::Transient, "transient"}, {MemoryUse::Cache, "cache"}}};
   for (const auto& [use, name] : kUses)
     out.sample("lightprobe_memory_used_bytes", {{"use", name}}, double(app.memory.used(use)));
+}
+
+// The standard process figures of Prometheus's client libraries.
+void write_process(PrometheusText& out) {
   out.family("process_resident_memory_bytes", "gauge", "Resident memory size in bytes.");
   out.sample("process_resident_memory_bytes", {}, double(resident_memory_bytes()));
+  out.family("process_virtual_memory_bytes", "gauge", "Virtual memory size in bytes.");
+  out.sample("process_virtual_memory_bytes", {}, double(virtual_memory_bytes()));
+  out.family("process_cpu_seconds_total", "counter", "Total user and system CPU time spent in seconds.");
+  out.sample("process_cpu_seconds_total", {}, process_cpu_seconds());
+  out.family("process_open_fds", "gauge", "Number of open file descriptors.");
+  out.sample("process_open_fds", {}, double(open_file_descriptors()));
+  out.family("process_max_fds", "gauge", "Maximum number of open file descriptors.");
+  out.sample("process_max_fds", {}, double(max_file_descriptors()));
+  out.family("process_start_time_seconds", "gauge",
+             "Start time of the process since the Unix epoch in seconds.");
+  out.sample("process_start_time_seconds", {}, process_start_time_s());
 }
 
 void write_server(const App& app, PrometheusText& out) {
@@ -61,9 +85,9 @@ void write_server(const App& app, PrometheusText& out) {
   out.sample("lightprobe_build_info", {{"version", LIGHTPROBE_VERSION}}, 1);
   out.family("lightprobe_ready", "gauge", "1 once the maps and the state directory are loaded at start.");
   out.sample("lightprobe_ready", {}, app.ready.load() ? 1 : 0);
-  out.family("process_start_time_seconds", "gauge",
-             "Start time of the process since the Unix epoch in seconds.");
-  out.sample("process_start_time_seconds", {}, process_start_time_s());
+  out.family("lightprobe_http_requests_in_flight", "gauge",
+             "Requests begun and not yet answered (this scrape among them).");
+  out.sample("lightprobe_http_requests_in_flight", {}, double(requests_in_flight()));
   out.family("lightprobe_event_streams", "gauge", "Render event streams open (--max-event-streams).");
   out.sample("lightprobe_event_streams", {}, double(app.event_streams.load()));
 }
@@ -78,6 +102,7 @@ void register_metrics_routes(Router& router, App& app) {
     write_envmaps(app, out);
     write_renders(app, out);
     write_memory(app, out);
+    write_process(out);
     res.set_content(out.text(), kPrometheusContentType);
   });
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The container image, built and tested from inside: podman builds docker/Dockerfile (after the local
 # base images, tests/container/base_image.sh), the image's configuration is checked (non-root user,
-# port, volumes, health check, no compiler, no apt lists), then its entrypoint serves on a free port
-# with tests/data/envmaps mounted read-only at /data and a fresh directory at /state, and the API
-# smoke test (smoke.py) runs against it, as does the image's own HEALTHCHECK command. SIGTERM stops it.
+# port, volumes, health check, labels, no compiler, no apt lists), then its entrypoint serves on a free
+# port given as LIGHTPROBE_PORT with tests/data/envmaps mounted read-only at /data and a fresh directory
+# at /state, and the API smoke test (smoke.py) runs against it, as does the image's own HEALTHCHECK
+# command, unchanged. SIGTERM stops it.
 # As ../shared/docs/container-testing.md describes for machines without a Docker engine: build with
 # --isolation chroot, run with `buildah run --isolation chroot` (the host's network: the server's port
 # is on 127.0.0.1 here). Exits 77, which ctest counts as skipped, without podman, buildah, python3 or root.
@@ -34,7 +35,9 @@ echo "== podman build (docker/Dockerfile)"
 # is removed: nothing piles up. The compiler cache (a build cache mount) makes a rebuild about a minute.
 previous="$(podman image inspect --format '{{.Id}}' "$image" 2>/dev/null || true)"
 started=$SECONDS
-nice podman build --isolation chroot --format docker --layers=false -f "$root/docker/Dockerfile" -t "$image" "$root"
+revision="$(git -C "$root" rev-parse HEAD 2>/dev/null || echo unknown)"
+nice podman build --isolation chroot --format docker --layers=false -f "$root/docker/Dockerfile" -t "$image" \
+  --build-arg REVISION="$revision" --build-arg CREATED="$(date -u +%Y-%m-%dT%H:%M:%SZ)" "$root"
 echo "image built in $((SECONDS - started)) s"
 if [ -n "$previous" ] && [ "$previous" != "$(podman image inspect --format '{{.Id}}' "$image")" ]; then
   podman rmi "$previous" >/dev/null || true
@@ -83,25 +86,37 @@ echo "runs as uid $uid; no compiler, apt lists or caches"
 buildah run --isolation chroot -v "$root/tests/data/envmaps:/data:ro" "$container" \
   -- lightprobe info /data/forest.exr | grep -q '"width": *256' || fail "lightprobe info in the image"
 
-echo "== the server in the image"
+label() { podman image inspect --format "{{index .Config.Labels \"org.opencontainers.image.$1\"}}" "$image"; }
+version="$(sed -n 's/^set(LIGHTPROBE_VERSION \([^)]*\))/\1/p' "$root/cmake/version.cmake")"
+[ "$(label version)" = "$version" ] || fail "label version '$(label version)', the project's is $version"
+[ "$(label revision)" = "$revision" ] || fail "label revision '$(label revision)', built from $revision"
+[ -n "$(label title)" ] && [ -n "$(label created)" ] || fail "OCI labels: $(config .Config.Labels)"
+echo "labels: version $version, revision $revision"
+
+echo "== the server in the image, on a port set as docker run -e sets it"
+# The host's network (chroot isolation): a free port of the host, given as LIGHTPROBE_PORT.
+port="$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+buildah config --env LIGHTPROBE_PORT="$port" "$container"
 mkdir "$work/state"
 chown "$uid" "$work/state"
 buildah run --isolation chroot -v "$root/tests/data/envmaps:/data:ro" -v "$work/state:/state" "$container" \
-  -- "${entrypoint[@]}" --port 0 >"$work/server.log" 2>&1 &
+  -- "${entrypoint[@]}" >"$work/server.log" 2>&1 &
 server=$!
-port=""
 for _ in $(seq 600); do
-  port="$(sed -n 's|.*listening on http://0\.0\.0\.0:\([0-9]*\).*|\1|p' "$work/server.log")"
-  [ -n "$port" ] && break
+  grep -q "listening on http://0\.0\.0\.0:$port" "$work/server.log" && break
   kill -0 "$server" 2>/dev/null || break
   sleep 0.1
 done
-[ -n "$port" ] || { cat "$work/server.log"; fail "the server did not report listening on 0.0.0.0"; }
+grep -q "listening on http://0\.0\.0\.0:$port" "$work/server.log" ||
+  { cat "$work/server.log"; fail "the server did not listen on 0.0.0.0:$port (LIGHTPROBE_PORT)"; }
 echo "listening on 0.0.0.0:$port"
 
-probe=("${healthcheck[@]:1}")
-probe=("${probe[@]/:8080\//:$port/}")
-inside "${probe[@]}" || { cat "$work/server.log"; fail "the image's health check"; }
+# The image's own health check command, unchanged: it finds the port in LIGHTPROBE_PORT too.
+for _ in $(seq 100); do
+  inside "${healthcheck[@]:1}" >/dev/null 2>&1 && break
+  sleep 0.1
+done
+inside "${healthcheck[@]:1}" || { cat "$work/server.log"; fail "the image's health check"; }
 
 python3 "$here/smoke.py" "http://127.0.0.1:$port" "$root/tests/data/envmaps" studio.hdr ||
   { cat "$work/server.log"; fail "the API smoke test"; }

@@ -64,6 +64,12 @@ TEST(HealthCheck, UnusableUrlIsABadFlag) {
   }
 }
 
+TEST(HealthCheck, APathNeedsAPort) {
+  const auto run = test::run_until_exit({"--health-check", "/api/v1/ready", "--port", "0"}, 10s);
+  EXPECT_EQ(run.exit_status, 2) << run.output;
+  EXPECT_NE(run.output.find("needs the server's --port"), std::string::npos) << run.output;
+}
+
 TEST(HealthCheck, HelpListsTheFlag) {
   const auto run = test::run_until_exit({"--help"}, 10s);
   EXPECT_EQ(run.exit_status, 0);

@@ -3,19 +3,27 @@
 // buckets cumulative up to le="+Inf" = _count. Its figures are those of the requests, maps and render the
 // test made, counted exactly.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "support/http_reply.hpp"
+#include "support/raw_connection.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
+#include "support/white_map.hpp"
 
 namespace lp {
 namespace {
@@ -219,6 +227,74 @@ TEST(Metrics, ThePrometheusTextFormatWithTheServersFigures) {
   const double rss = e.value("process_resident_memory_bytes");
   EXPECT_NEAR(rss, double(resident_bytes_of(s.pid())), 0.1 * rss);
   EXPECT_GT(rss, 10e6);  // the default map alone holds 6 MB of pixels
+}
+
+// /proc/PID/stat's user and system time (fields 14 and 15), in seconds.
+double cpu_seconds_of(int pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+  std::istringstream fields(text.substr(text.rfind(')') + 2));  // after the command name
+  std::string field;
+  double ticks = 0;
+  for (int i = 3; i <= 15 && fields >> field; ++i)
+    if (i >= 14) ticks += std::stod(field);
+  return ticks / double(sysconf(_SC_CLK_TCK));
+}
+
+int64_t open_fds_of(int pid) {
+  const auto dir = "/proc/" + std::to_string(pid) + "/fd";
+  return std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator());
+}
+
+// The soft "Max open files" of /proc/PID/limits.
+double max_fds_of(int pid) {
+  std::ifstream limits("/proc/" + std::to_string(pid) + "/limits");
+  for (std::string line; std::getline(limits, line);)
+    if (line.rfind("Max open files", 0) == 0) return std::stod(line.substr(26));
+  return -1;
+}
+
+TEST(Metrics, ProcessFiguresPrefilterJobsAndRequestsInFlight) {
+  test::ServerProcess s;
+  auto c = s.client();
+  ASSERT_EQ(test::upload_white_map(*c, "white").status, 201);
+  const auto submitted = test::reply(c->Post(
+      "/api/v1/envmaps/white/prefilter", R"({"levels":3,"base_size":16,"samples":16})", "application/json"));
+  ASSERT_EQ(submitted.status, 202) << submitted.body;
+  ASSERT_EQ(test::finished_job(*c, submitted.header("Location"))["status"], "done");
+  // Two requests in flight besides the scrape: their bodies have not arrived.
+  std::vector<std::unique_ptr<test::RawConnection>> held;
+  for (int i = 0; i < 2; ++i) {
+    held.push_back(std::make_unique<test::RawConnection>(s.port()));
+    held.back()->send(
+        "POST /api/v1/renders HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+        "Content-Length: 2\r\n\r\n");
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+
+  const Exposition e = parse(test::reply(c->Get("/metrics")).body);
+  EXPECT_EQ(e.value("lightprobe_http_requests_in_flight"), 3);
+  EXPECT_EQ(e.types.at("lightprobe_prefilter_jobs"), "gauge");
+  EXPECT_EQ(e.value("lightprobe_prefilter_jobs", {{"state", "done"}}), 1);
+  for (const char* state : {"queued", "running", "failed", "cancelled", "interrupted"})
+    EXPECT_EQ(e.value("lightprobe_prefilter_jobs", {{"state", state}}), 0) << state;
+  // Against the kernel's figures read now; CPU time grows between the reads (2 cores, 10 ticks a read).
+  EXPECT_EQ(e.types.at("process_cpu_seconds_total"), "counter");
+  const double cpu = e.value("process_cpu_seconds_total");
+  EXPECT_GT(cpu, 0);
+  EXPECT_LE(cpu, cpu_seconds_of(s.pid()) + 0.1);
+  EXPECT_NEAR(e.value("process_open_fds"), double(open_fds_of(s.pid())), 4);
+  EXPECT_GE(e.value("process_open_fds"), 3 + 3);  // stdio, the listening socket and these connections
+  EXPECT_EQ(e.value("process_max_fds"), max_fds_of(s.pid()));
+  EXPECT_GT(e.value("process_virtual_memory_bytes"), e.value("process_resident_memory_bytes"));
+
+  for (auto& h : held) h->send("{}");
+  for (auto& h : held) EXPECT_NE(h->read_response().status, 0);
+  // A request leaves the count just after its response is sent.
+  double in_flight = 0;
+  for (int i = 0; i < 100 && in_flight != 1; ++i, std::this_thread::sleep_for(std::chrono::milliseconds(10)))
+    in_flight = parse(test::reply(c->Get("/metrics")).body).value("lightprobe_http_requests_in_flight");
+  EXPECT_EQ(in_flight, 1);
 }
 
 TEST(Metrics, OnlyDeclaredQueryParametersAndNoRawPaths) {

@@ -69,6 +69,31 @@ TEST(Readiness, NotReadyWhileTheMapsLoadThenReady) {
   EXPECT_EQ(maps.body_json()["envmaps"][0]["name"], "slow");
 }
 
+// The probe a container's HEALTHCHECK runs, `--health-check /api/v1/ready`, finds the port as the server
+// does (here LIGHTPROBE_PORT) and passes only once the server is ready.
+TEST(Readiness, TheHealthCheckOfAPathPassesOnlyWhenReady) {
+  test::TempDir dir;
+  const auto fifo = dir.path() / "slow.pfm";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  test::ServerProcess s({"--load", "slow=" + fifo.string()}, {}, test::StartUntil::Listening);
+  const test::Variables port = {{"LIGHTPROBE_PORT", std::to_string(s.port())}};
+  const auto probe = [&] { return test::run_until_exit({"--health-check", "/api/v1/ready"}, 30s, port); };
+
+  const auto loading = probe();
+  EXPECT_EQ(loading.exit_status, 1) << loading.output;
+  EXPECT_NE(loading.output.find("status 503"), std::string::npos) << loading.output;
+
+  feed(fifo, test::grey_map_pfm(8, 4));
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (get(s, "/api/v1/ready").status != 200 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(10ms);
+  const auto ready = probe();
+  EXPECT_EQ(ready.exit_status, 0) << ready.output;
+  EXPECT_NE(ready.output.find("http://127.0.0.1:" + std::to_string(s.port()) + "/api/v1/ready: status 200"),
+            std::string::npos)
+      << ready.output;
+}
+
 TEST(Readiness, AStopWhileLoadingExitsAtOnce) {
   test::TempDir dir;
   const auto fifo = dir.path() / "never.pfm";
