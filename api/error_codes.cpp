@@ -42,6 +42,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{EnvmapChanged, 409, "envmap_changed", {}},
     ErrorCodeEntry{ModelChanged, 409, "model_changed", {}},
     ErrorCodeEntry{WorkerOnly, 409, "worker_only", {}},
+    ErrorCodeEntry{TooManyJobs, 429, "too_many_jobs", {}},
     ErrorCodeEntry{QueueFull, 503, "queue_full", {}},
     ErrorCodeEntry{TooManyStreams, 503, "too_many_streams", {}},
     ErrorCodeEntry{TooManyConnections, 503, "too_many_connections", {}},

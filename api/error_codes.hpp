@@ -49,6 +49,7 @@ enum class ErrorCode {
   ModelChanged,
   WorkerOnly,  // --role worker: renders work items of other servers, accepts no render of its own
   // Capacity.
+  TooManyJobs,  // one client's share of a job queue is taken (--max-prefilters-per-client)
   QueueFull,
   TooManyStreams,
   TooManyConnections,

@@ -186,6 +186,7 @@ void add_prefilter_parameters(std::vector<Doc>& d) {
   d.push_back(range_doc(body(path, "levels"), limits::kPrefilterLevels, r.params.levels));
   d.push_back(range_doc(body(path, "base_size"), limits::kPrefilterBaseSize, r.params.base_size));
   d.push_back(range_doc(body(path, "samples"), limits::kPrefilterSamples, r.params.samples));
+  d.push_back(range_doc(schema("PrefilterJob", {"properties", "texel_samples"}), kPrefilterTexelSamples));
   d.push_back(enum_doc(body(path, "projection"), std::optional(r.params.projection)));
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "projection"}), std::optional<Projection>()));
   d.push_back(enum_doc(body(path, "format"), std::optional(r.format)));

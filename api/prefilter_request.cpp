@@ -1,7 +1,11 @@
 #include "api/prefilter_request.hpp"
 
+#include <fmt/format.h>
+
+#include "api/api_error.hpp"
 #include "api/engine_validation.hpp"
 #include "engine/core/limits.hpp"
+#include "engine/prefilter/prefilter_chain.hpp"
 
 namespace lp::api {
 namespace {
@@ -25,6 +29,13 @@ PrefilterRequest parse_prefilter_request(const std::string& body) {
   r.format = json_enum(j, "format", r.format);
   r.precision = json_enum(j, "precision", r.precision);
   as_invalid_field([&] { p.validate(); });
+  const int64_t texel_samples = prefilter_work_units(p);
+  if (texel_samples > kPrefilterTexelSamples.max)
+    throw ApiError(ErrorCode::InvalidField,
+                   fmt::format("the chain would take {} texel samples (the texels of levels 1 to {} times "
+                               "'samples' {}, plus level 0's), over the limit texel_samples <= {}: ask "
+                               "fewer 'samples' or 'levels', or a smaller 'base_size'",
+                               texel_samples, p.levels - 1, p.samples, kPrefilterTexelSamples.max));
   return r;
 }
 

@@ -16,6 +16,12 @@ constexpr auto enum_entries(PrefilterFormat) {
       {{PrefilterFormat::Exr, "exr"}, {PrefilterFormat::Ktx2, "ktx2"}});
 }
 
+// The most texel samples one chain may take (engine/prefilter: prefilter_work_units): the texels of the
+// levels above 0 times `samples`, plus level 0's texels. It bounds what one job costs (a few CPU-minutes
+// at most), which the fields' ranges alone do not: 11 levels from 2048 texels wide with 16384 samples
+// would take 11.5e9.
+inline constexpr Range<int64_t> kPrefilterTexelSamples{1, int64_t{1} << 30};
+
 struct PrefilterRequest {
   PrefilterParams params;
   PrefilterFormat format = PrefilterFormat::Ktx2;
@@ -25,7 +31,8 @@ struct PrefilterRequest {
 
 // {"levels":6,"base_size":256,"samples":1024,"projection":"latlong","format":"ktx2","precision":"half"},
 // every field optional (defaults shown); an empty body means all defaults. Ranges from
-// engine/core/limits.hpp (kPrefilter*), and the rest of PrefilterParams::validate.
+// engine/core/limits.hpp (kPrefilter*), the rest of PrefilterParams::validate, and at most
+// kPrefilterTexelSamples texel samples (400 invalid_field naming the limit).
 PrefilterRequest parse_prefilter_request(const std::string& body);
 
 }  // namespace lp::api

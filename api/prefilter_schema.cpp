@@ -1,6 +1,7 @@
 #include "api/prefilter_schema.hpp"
 
 #include "api/prefilter_files.hpp"
+#include "engine/prefilter/prefilter_chain.hpp"
 
 namespace lp::api {
 
@@ -10,6 +11,7 @@ void describe_prefilter(Json& out, const PrefilterRequest& request, const Prefil
   out["levels"] = p.levels;
   out["base_size"] = p.base_size;
   out["samples"] = p.samples;
+  out["texel_samples"] = prefilter_work_units(p);
   out["projection"] = enum_name(p.projection);
   out["format"] = enum_name(request.format);
   out["precision"] = enum_name(request.precision);

@@ -21,13 +21,16 @@ namespace lp::server {
 inline JobManagerConfig render_job_config(const Options& o) {
   JobManagerConfig config = o.jobs;
   config.arena_concurrency = o.threads;
+  config.max_per_client = 0;  // renders are bounded by the queue alone
   return config;
 }
 
-// Prefilters run one at a time (each takes every core its arena has), queued and kept as renders are.
+// Prefilters run one at a time (each takes every core its arena has), queued and kept as renders are,
+// and --max-prefilters-per-client of one client at most.
 inline JobManagerConfig prefilter_job_config(const Options& o) {
   JobManagerConfig config = render_job_config(o);
   config.max_running = 1;
+  config.max_per_client = o.jobs.max_per_client;
   return config;
 }
 

@@ -186,6 +186,7 @@ const std::vector<IntFlag>& int_flags() {
       {&api::kMaxModelTexturePixels, [](Options& o, int64_t v) { o.limits.max_model_texture_pixels = v; }},
       {&kMaxRunningJobs, [](Options& o, int64_t v) { o.jobs.max_running = int(v); }},
       {&kMaxQueuedJobs, [](Options& o, int64_t v) { o.jobs.max_queued = int(v); }},
+      {&kMaxPrefiltersPerClient, [](Options& o, int64_t v) { o.jobs.max_per_client = int(v); }},
       {&kMaxFinishedJobs, [](Options& o, int64_t v) { o.jobs.max_finished = int(v); }},
       {&kMaxFinishedMb, [](Options& o, int64_t v) { o.jobs.max_finished_bytes = v << 20; }},
       {&kMaxEventStreams, [](Options& o, int64_t v) { o.max_event_streams = int(v); }},

@@ -62,9 +62,9 @@ struct Options {
   TransportLimits transport;    // --max-connections..., --max-upload-mb
   // --max-pixels, --max-samples, --max-lights, --max-render-*, --max-mesh-triangles, --max-*texture-pixels
   api::RequestLimits limits;
-  AssetLimits assets;        // --max-assets, --max-asset-mb, --max-asset-files
-  JobManagerConfig jobs;     // render jobs: --max-*-jobs, --max-finished-mb, --render-priority
-  LogConfig log;             // --log-level, --log-format, --access-log-sample
+  AssetLimits assets;     // --max-assets, --max-asset-mb, --max-asset-files
+  JobManagerConfig jobs;  // --max-*-jobs, --max-finished-mb, --render-priority, --max-prefilters-per-client
+  LogConfig log;          // --log-level, --log-format, --access-log-sample
   ScaleOutConfig scale_out;  // --redis, --role, --advertise-url, --redis-*
 };
 

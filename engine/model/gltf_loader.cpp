@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "engine/core/error.hpp"
+#include "engine/model/glb_chunks.hpp"
 #include "engine/model/gltf_accessor.hpp"
 #include "engine/model/gltf_cameras.hpp"
 #include "engine/model/gltf_extensions.hpp"
@@ -53,7 +54,7 @@ tinygltf::Model parse(std::span<const uint8_t> bytes, const std::string& name, M
   loader.SetFsCallbacks({file_exists, expand_path, read_file, write_file, &files});
   tinygltf::Model model;
   std::string err, warn;
-  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  const bool binary = is_glb(bytes);
   if (bytes.size() > size_t(UINT32_MAX)) throw Error(ErrorKind::TooLarge, "model " + name + " is over 4 GB");
   const bool ok =
       binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "")

@@ -2,12 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <cstring>
 #include <nlohmann/json.hpp>
 #include <string_view>
 #include <vector>
 
 #include "engine/core/error.hpp"
+#include "engine/model/glb_chunks.hpp"
 
 namespace lp::gltf {
 namespace {
@@ -223,30 +223,10 @@ class Checker {
   const std::string& name_;
 };
 
-uint32_t read_u32(const uint8_t* p) {
-  uint32_t v;
-  std::memcpy(&v, p, 4);
-  return v;  // glTF is little-endian, as are the machines we build for
-}
-
-// The JSON of a .gltf, or the JSON chunk of a .glb.
+// The JSON of a .gltf, or the JSON chunk of a .glb (whose chunk table is checked whole first).
 std::string_view json_text(std::span<const uint8_t> bytes, const std::string& name) {
-  const auto* chars = reinterpret_cast<const char*>(bytes.data());
-  if (bytes.size() < 4 || std::memcmp(chars, "glTF", 4) != 0) return {chars, bytes.size()};
-  const auto corrupt = [&](const std::string& why) {
-    throw Error(ErrorKind::Corrupt, "glb " + name + ": " + why);
-  };
-  if (bytes.size() < 20) corrupt("shorter than its header");
-  const uint32_t version = read_u32(bytes.data() + 4);
-  if (version == 1)
-    throw Error(ErrorKind::Unsupported,
-                "glb " + name + ": a binary glTF 1.0 file (header version 1): only glTF 2.0 is supported");
-  if (version != 2) corrupt(fmt::format("version {} is not 2", version));
-  if (read_u32(bytes.data() + 8) > bytes.size()) corrupt("its length is past the end of the file");
-  const uint32_t length = read_u32(bytes.data() + 12);
-  if (std::memcmp(chars + 16, "JSON", 4) != 0) corrupt("the first chunk is not JSON");
-  if (length > bytes.size() - 20) corrupt("the JSON chunk runs past the end of the file");
-  return {chars + 20, length};
+  const std::span<const uint8_t> text = is_glb(bytes) ? glb_chunks(bytes, name).json : bytes;
+  return {reinterpret_cast<const char*>(text.data()), text.size()};
 }
 
 // Depth of nested arrays and objects, counted over the text without recursion; strings skipped.

@@ -4,7 +4,9 @@
 #include <archive_entry.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -40,6 +42,29 @@ Reader open_reader(std::span<const uint8_t> bytes) {
   if (archive_read_open_memory(a.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
     throw ApiError(ErrorCode::UnsupportedMediaType, kNotAnArchive);
   return a;
+}
+
+ApiError too_many_members(const ArchiveLimits& limits) {
+  return ApiError(ErrorCode::TooLarge, fmt::format("the archive holds more than {} members (--{})",
+                                                   limits.max_members, kMaxAssetFiles.flag));
+}
+
+bool is_gzip(std::span<const uint8_t> bytes) {
+  return bytes.size() >= 2 && bytes[0] == 0x1f && bytes[1] == 0x8b;
+}
+
+// libarchive reads a zip's whole central directory into memory (a few hundred bytes an entry) before
+// it returns the first member, so the member limit is checked before it opens the bytes: every entry
+// it can read there starts with the signature "PK\1\2", and their count over all the bytes bounds the
+// members (member data holding the signature could only make a refusal early, never an acceptance
+// wrong). Compressed bytes are read as a stream, one member at a time, and counted as they come.
+void check_directory_entries(std::span<const uint8_t> bytes, const ArchiveLimits& limits) {
+  if (is_gzip(bytes)) return;
+  static constexpr std::array<uint8_t, 4> kEntry = {'P', 'K', 1, 2};
+  const std::boyer_moore_horspool_searcher searcher(kEntry.begin(), kEntry.end());
+  int64_t entries = 0;
+  for (auto at = bytes.begin(); (at = std::search(at, bytes.end(), searcher)) != bytes.end(); ++at)
+    if (++entries > limits.max_members) throw too_many_members(limits);
 }
 
 std::string reader_error(archive* a) {
@@ -92,9 +117,7 @@ class Unpacker {
       const int r = archive_read_next_header(a_, &entry);
       if (r == ARCHIVE_EOF) break;
       if (r != ARCHIVE_OK && r != ARCHIVE_WARN) header_failed();
-      if (++members_ > limits_.max_members)
-        throw ApiError(ErrorCode::TooLarge, fmt::format("the archive holds more than {} members (--{})",
-                                                        limits_.max_members, kMaxAssetFiles.flag));
+      if (++members_ > limits_.max_members) throw too_many_members(limits_);
       unpack(entry);
     }
     return std::move(files_);
@@ -164,6 +187,7 @@ class Unpacker {
 
 std::vector<UnpackedFile> unpack_archive(std::span<const uint8_t> archive, const fs::path& dir,
                                          const ArchiveLimits& limits) {
+  check_directory_entries(archive, limits);
   const Reader reader = open_reader(archive);
   return Unpacker(reader.get(), dir, limits).run();
 }

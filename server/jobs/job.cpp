@@ -6,6 +6,7 @@
 
 #include "api/api_error.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/memory_budget.hpp"
 
 namespace lp::server {
 namespace {
@@ -133,6 +134,8 @@ void Job::execute() {
            : interrupted ? JobStatus::Interrupted
                          : JobStatus::Cancelled,
            std::nullopt);
+  } catch (const MemoryBudgetError& e) {
+    failed(e.transient() ? api::ErrorCode::MemoryBusy : api::ErrorCode::InsufficientMemory, e.what());
   } catch (const Error& e) {
     failed(api::error_code_for(e.kind()), e.what());
   } catch (const api::ApiError& e) {

@@ -28,22 +28,26 @@ std::string JobManager::new_id() {
   return fmt::format("{:016x}", mix64(id_state_));
 }
 
-bool JobManager::submit(std::shared_ptr<Job> job) {
+JobManager::Admission JobManager::submit(std::shared_ptr<Job> job, const std::string& client) {
   {
     std::lock_guard lock(mutex_);
     // Capacity counts running jobs too, so a job is accepted whenever a runner is idle, and the
     // answer does not depend on whether a runner has taken the previous job off the queue yet.
     if (stopping_ || queue_.size() + running_.size() >= size_t(config_.max_queued + config_.max_running))
-      return false;
+      return Admission::Refused;
+    if (!client.empty() && config_.max_per_client > 0 &&
+        client_count_locked(client) >= config_.max_per_client)
+      return Admission::ClientLimit;
     if (auto it = jobs_.find(job->id()); it != jobs_.end()) {
-      if (!is_finished(it->second->status())) return false;
+      if (!is_finished(it->second->status())) return Admission::Refused;
       drop_finished(it->second);
     }
     jobs_[job->id()] = job;
+    if (!client.empty()) clients_[job->id()] = client;
     queue_.push_back(std::move(job));
   }
   work_cv_.notify_one();
-  return true;
+  return Admission::Accepted;
 }
 
 void JobManager::restore(std::shared_ptr<Job> job) {
@@ -116,6 +120,16 @@ int JobManager::running_count() const {
   return int(running_.size());
 }
 
+int JobManager::client_count(const std::string& client) const {
+  std::lock_guard lock(mutex_);
+  return client_count_locked(client);
+}
+
+int JobManager::client_count_locked(const std::string& client) const {
+  return int(
+      std::count_if(clients_.begin(), clients_.end(), [&](const auto& c) { return c.second == client; }));
+}
+
 void JobManager::shutdown(std::chrono::milliseconds grace) {
   std::vector<std::shared_ptr<Job>> queued, running;
   {
@@ -165,6 +179,7 @@ void JobManager::runner_loop(int runner) {
 }
 
 void JobManager::retire(const std::shared_ptr<Job>& job) {
+  clients_.erase(job->id());
   if (!jobs_.count(job->id())) return;  // removed by a DELETE between its end and now
   if (stopping_ && job->status() == JobStatus::Interrupted) return;  // kept for a resume after the restart
   finished_.push_back(job);

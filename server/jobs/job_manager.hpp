@@ -30,9 +30,12 @@ class JobManager {
   // A fresh random id (16 hex digits).
   std::string new_id();
 
-  // Queues the job; false if max_running + max_queued jobs are already queued or running, or the manager
-  // is shutting down. A job with the id of an ended job replaces it (a resumed run).
-  bool submit(std::shared_ptr<Job> job);
+  enum class Admission { Accepted, Refused, ClientLimit };
+  // Queues the job; Refused if max_running + max_queued jobs are already queued or running, or the
+  // manager is shutting down; ClientLimit if max_per_client jobs of `client` (a request's client as the
+  // transport names it; empty: none) are. A job with the id of an ended job replaces it (a resumed run).
+  Admission submit(std::shared_ptr<Job> job, const std::string& client);
+  bool submit(std::shared_ptr<Job> job) { return submit(std::move(job), "") == Admission::Accepted; }
   // Adds a job that ended in an earlier run of the server (restored from the state directory).
   void restore(std::shared_ptr<Job> job);
 
@@ -54,6 +57,7 @@ class JobManager {
 
   int queued_count() const;
   int running_count() const;
+  int client_count(const std::string& client) const;  // jobs of `client` queued or running
 
  private:
   void runner_loop(int runner);
@@ -61,6 +65,7 @@ class JobManager {
   void drop_finished(const std::shared_ptr<Job>& job);  // takes an ended job out of the finished list
   void forget(const std::shared_ptr<Job>& job);         // and lets it delete what it keeps
   std::shared_ptr<Job> next_job();                      // blocks; nullptr when stopping
+  int client_count_locked(const std::string& client) const;
 
   const JobManagerConfig config_;
   mutable std::mutex mutex_;
@@ -69,7 +74,8 @@ class JobManager {
   std::map<std::string, std::shared_ptr<Job>> jobs_;  // all known jobs, by id
   std::deque<std::shared_ptr<Job>> queue_;
   std::vector<std::shared_ptr<Job>> running_;
-  std::deque<std::shared_ptr<Job>> finished_;  // oldest first
+  std::map<std::string, std::string> clients_;  // the client of each job queued or running, by job id
+  std::deque<std::shared_ptr<Job>> finished_;   // oldest first
   int64_t finished_bytes_ = 0;
   uint64_t id_state_;
   std::vector<std::jthread> runners_;

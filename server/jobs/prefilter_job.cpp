@@ -1,21 +1,44 @@
 #include "server/jobs/prefilter_job.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <thread>
 
 #include "api/prefilter_schema.hpp"
 
 namespace lp::server {
 
 PrefilterJob::PrefilterJob(std::string id, std::string envmap_name, std::shared_ptr<const EnvMap> envmap,
-                           std::string envmap_fingerprint, api::PrefilterRequest request,
-                           MemoryReservation memory)
+                           std::string envmap_fingerprint, api::PrefilterRequest request, MemoryBudget budget)
     : Job(std::move(id)),
       envmap_name_(std::move(envmap_name)),
       envmap_fingerprint_(std::move(envmap_fingerprint)),
       request_(std::move(request)),
       envmap_(std::move(envmap)),
-      memory_(std::move(memory)) {
+      budget_(std::move(budget)) {
   set_work(prefilter_work_units(request_.params), 0);
+}
+
+int64_t PrefilterJob::working_bytes(const EnvMap& map, const api::PrefilterRequest& request) {
+  return prefilter_working_bytes(map.width(), map.height(), request.params);
+}
+
+MemoryReservation PrefilterJob::reserve_working_memory() const {
+  const auto& p = request_.params;
+  const std::string what =
+      fmt::format("a prefiltered chain of {} levels from {} texels wide", p.levels, p.base_size);
+  for (bool logged = false;; logged = true) {
+    try {
+      return budget_.reserve(working_bytes(*envmap_, request_), MemoryUse::Transient, what);
+    } catch (const MemoryBudgetError& e) {
+      if (!e.transient()) throw;
+      if (!logged) spdlog::info("prefilter {} waits for memory: {}", id(), e.what());
+    }
+    if (cancel_flag().load() || interrupt_requested()) return {};
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
 }
 
 std::shared_ptr<const PrefilteredChain> PrefilterJob::chain() const {
@@ -35,6 +58,8 @@ int64_t PrefilterJob::retained_bytes() const {
 }
 
 bool PrefilterJob::run() {
+  memory_ = reserve_working_memory();
+  if (!memory_) return false;  // stopped while it waited
   const auto& p = request_.params;
   spdlog::info("prefilter {} started: map '{}', {} levels from {} texels wide, {} samples", id(),
                envmap_name_, p.levels, p.base_size, p.samples);

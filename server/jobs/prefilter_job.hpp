@@ -1,7 +1,8 @@
 #pragma once
 // A prefiltered specular chain as a background job (engine/prefilter): progress in texel samples,
 // checked for a cancel or a shutdown before every row, and the chain kept in memory once done, its
-// bytes held in the memory budget until the job is dropped. Nothing is kept across restarts: a chain
+// bytes held in the memory budget until the job is dropped. The memory of making the chain is reserved
+// when the job starts, not while it waits in the queue. Nothing is kept across restarts: a chain
 // is a pure function of the map and the request, made again by a new job. So a job queued, running or
 // done answers a second request of the same map content (its fingerprint) and the same parameters.
 #include <memory>
@@ -18,9 +19,11 @@ namespace lp::server {
 
 class PrefilterJob : public Job {
  public:
-  // `memory` holds prefilter_working_bytes of the map and the request; it shrinks to the chain at the end.
   PrefilterJob(std::string id, std::string envmap_name, std::shared_ptr<const EnvMap> envmap,
-               std::string envmap_fingerprint, api::PrefilterRequest request, MemoryReservation memory);
+               std::string envmap_fingerprint, api::PrefilterRequest request, MemoryBudget budget);
+
+  // What making the chain of `request` from `map` reserves while it runs.
+  static int64_t working_bytes(const EnvMap& map, const api::PrefilterRequest& request);
 
   const api::PrefilterRequest& request() const { return request_; }
   // Whether this job makes, or made, the chain `request` asks of a map of `envmap_fingerprint`: the same
@@ -38,8 +41,13 @@ class PrefilterJob : public Job {
   const std::string envmap_name_;
   const std::string envmap_fingerprint_;
   const api::PrefilterRequest request_;
+  // Reserves the working bytes at the start; while work in flight holds them, waits for it. Empty if a
+  // cancel or a shutdown came first.
+  MemoryReservation reserve_working_memory() const;
+
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
-  MemoryReservation memory_;
+  const MemoryBudget budget_;
+  MemoryReservation memory_;  // the working bytes while running; the chain's once done
 
   mutable std::mutex mutex_;
   std::shared_ptr<const PrefilteredChain> chain_;

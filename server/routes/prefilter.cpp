@@ -11,6 +11,7 @@
 #include "api/prefilter_request.hpp"
 #include "api/preview_params.hpp"
 #include "engine/image/image_io.hpp"
+#include "server/http/request_context.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/jobs/prefilter_job.hpp"
 #include "server/maps/envmap_content_hash.hpp"
@@ -40,6 +41,15 @@ std::shared_ptr<PrefilterJob> same_chain(const App& app, const std::string& fing
   return nullptr;
 }
 
+// The memory of making a chain is reserved when its job starts; one that could never fit is refused now.
+void check_fits(const MemoryBudget& memory, int64_t bytes) {
+  if (bytes > memory.capacity())
+    throw MemoryBudgetError(fmt::format("a prefiltered chain needs {} while it is made, more than the whole "
+                                        "memory budget of {}",
+                                        format_mib(bytes), format_mib(memory.capacity())),
+                            false);
+}
+
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   // One submission at a time, so two equal requests never both queue a job.
   static std::mutex submitting;
@@ -53,16 +63,25 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
     res.set_header("Location", prefilter_url(job->id()));
     return send_json(res, status);
   }
-  const auto& p = request.params;
-  auto memory = app.memory.reserve(
-      prefilter_working_bytes(entry->map->width(), entry->map->height(), p), MemoryUse::Transient,
-      fmt::format("a prefiltered chain of {} levels from {} texels wide", p.levels, p.base_size));
+  check_fits(app.memory, PrefilterJob::working_bytes(*entry->map, request));
   auto job = std::make_shared<PrefilterJob>(app.prefilters.new_id(), entry->name, entry->map, fingerprint,
-                                            std::move(request), std::move(memory));
+                                            std::move(request), app.memory);
   auto status = job->status_json();  // taken before a runner can pick it up: "queued"
   status["reused"] = false;
-  if (!app.prefilters.submit(job)) return send_queue_full(app.prefilters, "prefilters", res);
-  send_accepted(prefilter_url(job->id()), status, res);
+  const std::string& client = current_request().client;
+  switch (app.prefilters.submit(job, client)) {
+    case JobManager::Admission::Accepted:
+      return send_accepted(prefilter_url(job->id()), status, res);
+    case JobManager::Admission::Refused:
+      return send_queue_full(app.prefilters, "prefilters", res);
+    case JobManager::Admission::ClientLimit:
+      res.set_header("Retry-After", std::to_string(app.prefilters.retry_after_s()));
+      return send_error(
+          res, api::ErrorCode::TooManyJobs,
+          fmt::format("client {} has {} prefilter jobs queued or running, the limit per client "
+                      "(--{}); retry when one has ended",
+                      client, app.prefilters.client_count(client), kMaxPrefiltersPerClient.flag));
+  }
 }
 
 void list(const App& app, httplib::Response& res) {

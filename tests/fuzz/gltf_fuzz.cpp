@@ -1,7 +1,9 @@
 // The glTF loader (schema check, tinygltf, accessors, node graph, materials, embedded textures) and the
 // description of what it loads (bounds, extensions and warnings) on any bytes, as .gltf JSON or, when
-// they start with "glTF", as .glb.
+// they start with "glTF", as .glb (its header and chunk table checked first), up to the size of a real
+// asset's .glb.
 // fuzz-dictionary: gltf.dict
+// fuzz-max-len: 2097152
 #include <cstddef>
 #include <cstdint>
 #include <span>

@@ -36,10 +36,11 @@ const std::string kObj = "mtllib grid.mtl\nusemtl m\n" + test::grid_obj(4);  // 
 const std::string kMtl = "newmtl m\nKd 0.8 0.8 0.8\nmap_Kd textures/albedo.png\n";
 const std::string kPng = test::checker_png(4);
 const std::string kPlainObj = test::grid_obj(4);  // without materials: a model file alone
-const std::string kGlb = [] {
-  const auto bytes = test::read_bytes(test::model_path("quad.glb"));
+std::string text_of(const std::filesystem::path& path) {
+  const auto bytes = test::read_bytes(path);
   return std::string(bytes.begin(), bytes.end());
-}();
+}
+const std::string kGlb = text_of(test::model_path("quad.glb"));
 
 // An OBJ model with its material and texture, zipped as a folder is zipped.
 std::vector<ArchiveMember> textured_obj_in(const std::string& top) {
@@ -284,6 +285,9 @@ std::vector<Refusal> refusals() {
       {"a .gltf that is no JSON", "g2", "{\"asset\": ", 422, "invalid_model", "glTF model.gltf"},
       {"a model without triangles", "g3", test::glb_bytes(R"({"asset":{"version":"2.0"}})"), 422,
        "invalid_model", "glTF model.glb has no triangles in its scene"},
+      {"a .glb whose BIN chunk runs 8 bytes past the file", "g5",
+       text_of(test::fuzz_corpus_path("gltf", "bin_chunk_past_the_end.glb")), 422, "invalid_model",
+       "glb model.glb: chunk 1 at byte 1600: its length 296 runs past the end of the file"},
       {"an archive's broken .obj", "g4", zip({file_member("model.obj", "v 1 2\nf 1 2 3\n")}), 422,
        "invalid_model", "model.obj"},
       {"truncated tar", "x2", cut.substr(0, cut.size() / 2), 422, "corrupt",

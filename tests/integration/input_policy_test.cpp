@@ -12,6 +12,7 @@
 
 #include "engine/image/image_io.hpp"
 #include "support/http_reply.hpp"
+#include "support/process_status.hpp"
 #include "support/server_process.hpp"
 #include "support/test_data.hpp"
 
@@ -190,15 +191,6 @@ TEST(InputPolicy, RadianceHeaderThatHungTheDecoderIsRefused) {
   EXPECT_EQ(test::reply(server().client()->Get("/api/v1/health")).status, 200);
 }
 
-// Peak resident memory of a process (VmHWM), in MiB.
-double peak_rss_mib(int pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return -1;
-}
-
 TEST(InputPolicy, ExrThatCannotHoldItsPixelsIsRefusedWithoutTheirMemory) {
   // 569 bytes claiming 65536 x 512 pixels: allocating them would take 400 MB.
   test::ServerProcess s({"--max-pixels", std::to_string(65536 * 512)});
@@ -208,7 +200,7 @@ TEST(InputPolicy, ExrThatCannotHoldItsPixelsIsRefusedWithoutTheirMemory) {
     EXPECT_EQ(r.status, 422) << r.body;
     EXPECT_NE(r.body.find("cannot hold"), std::string::npos) << r.body;
   }
-  const double peak = peak_rss_mib(s.pid());
+  const double peak = test::peak_rss_mib(s.pid());
   EXPECT_GT(peak, 0);
   EXPECT_LT(peak, 200.0) << "peak resident memory of the server in MiB";
 }

@@ -162,7 +162,7 @@ TEST(PrefilterApi, ExrLevelsOfARealMapKeepItsPowerAtLevelZero) {
 }
 
 TEST(PrefilterApi, ALongJobShowsProgressAndIsCancelledWhileRunning) {
-  const Reply long_job = submit("forest_exr", R"({"levels":11,"base_size":2048,"samples":16384})");
+  const Reply long_job = submit("forest_exr", R"({"levels":11,"base_size":2048,"samples":1024})");
   ASSERT_EQ(long_job.status, 202) << long_job.body;
   const std::string url = long_job.header("Location");
   // A second job waits behind it: its files are not there yet.
@@ -254,7 +254,7 @@ TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
 }
 
 TEST(PrefilterApi, ARunningJobIsReusedUntilItIsCancelled) {
-  const std::string body = R"({"levels":11,"base_size":2048,"samples":16000,"projection":"equal-area"})";
+  const std::string body = R"({"levels":11,"base_size":2048,"samples":512,"projection":"equal-area"})";
   const Reply first = submit("forest_exr", body);
   ASSERT_EQ(first.status, 202) << first.body;
   const std::string url = first.header("Location");

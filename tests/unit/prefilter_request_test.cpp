@@ -116,5 +116,30 @@ TEST(PrefilterRequest, TheDescriptionGivesSizesInTheProjectionsTerms) {
   EXPECT_NE(faces.find("pz looks at -y, right +x, down -z"), std::string::npos) << faces;
 }
 
+// The cost, texel samples, counted by hand for lat-long levels of width w and height w / 2: level 0 one
+// sample a texel, the others `samples`; over kPrefilterTexelSamples a 400 naming the limit.
+TEST(PrefilterRequest, TheChainsCostIsBoundedByTexelSamples) {
+  const auto texel_samples = [](int levels, int base, int64_t samples) {
+    int64_t total = int64_t(base) * (base / 2);
+    for (int i = 1; i < levels; ++i) total += int64_t(base >> i) * ((base >> i) / 2) * samples;
+    return total;
+  };
+  const auto ok = parse_prefilter_request(R"({"levels":11,"base_size":2048,"samples":1024})");
+  Json out;
+  describe_prefilter(out, ok, {"forest", "/f", false, 0});
+  EXPECT_EQ(out["texel_samples"], texel_samples(11, 2048, 1024));
+  EXPECT_EQ(out["texel_samples"], 717924352);
+  try {
+    parse_prefilter_request(R"({"levels":11,"base_size":2048,"samples":16384})");
+    ADD_FAILURE() << "accepted";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidField);
+    const std::string what = e.what();
+    EXPECT_NE(what.find(std::to_string(texel_samples(11, 2048, 16384)) + " texel samples"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("texel_samples <= 1073741824"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace lp::api
