@@ -104,7 +104,7 @@ TEST(PrefilterLevelPng, ALevelTheChainLacksIs404AndABadExposureA400) {
 
 TEST(PrefilterLevelPng, AJobThatHasNotFinishedHasNoPicturesYet) {
   const Reply long_job = test::reply(shared_client().Post("/api/v1/envmaps/forest_exr/prefilter",
-                                                          R"({"levels":11,"base_size":2048,"samples":16384})",
+                                                          R"({"levels":11,"base_size":2048,"samples":1024})",
                                                           "application/json"));
   ASSERT_EQ(long_job.status, 202) << long_job.body;
   const std::string url = long_job.header("Location");

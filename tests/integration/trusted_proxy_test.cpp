@@ -51,8 +51,10 @@ TEST(TrustedProxy, ItsConnectionsAreNotLimitedPerClientItsClientsAre) {
   // One client holds its two requests; a third is refused, another client is answered.
   auto first = held_request(port, "198.51.100.9, 203.0.113.7");
   auto second = held_request(port, "203.0.113.7");
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // both heads read
-  const RawResponse refused = health_of(port, "203.0.113.7");
+  RawResponse refused;  // once the server has read both heads
+  for (int i = 0; i < 300 && refused.status != 503;
+       ++i, std::this_thread::sleep_for(std::chrono::milliseconds(10)))
+    refused = health_of(port, "203.0.113.7");
   EXPECT_EQ(refused.status, 503);
   const std::string message = json::parse(refused.body)["error"]["message"];
   EXPECT_NE(message.find("203.0.113.7"), std::string::npos) << message;
@@ -85,11 +87,14 @@ TEST(TrustedProxy, WithoutTheFlagTheHeaderIsIgnored) {
   EXPECT_EQ(health_of(port, "203.0.113.7").status, 200);
   EXPECT_TRUE(server.wait_log(R"("client":"127.0.0.1")")) << server.log();
   EXPECT_EQ(server.log().find("203.0.113.7"), std::string::npos);
-  // Loopback connections count against the per-client limit, whatever they forward.
+  // Loopback connections count against the per-client limit, whatever they forward: two held (each
+  // answered once, so the server has admitted it), a third refused.
   std::vector<std::unique_ptr<RawConnection>> held;
-  held.push_back(held_request(port, "203.0.113.1"));
-  held.push_back(held_request(port, "203.0.113.2"));
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  for (const char* client : {"203.0.113.1", "203.0.113.2"}) {
+    held.push_back(std::make_unique<RawConnection>(port));
+    held.back()->send(test::get_request(port, "/api/v1/health", forwarded(client)));
+    EXPECT_EQ(held.back()->read_response().status, 200);
+  }
   EXPECT_EQ(health_of(port, "203.0.113.3").status, 503);
 }
 

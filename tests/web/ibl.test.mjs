@@ -117,7 +117,7 @@ test('a small prefilter job reaches done and shows every level side by side at o
 });
 
 test('a long prefilter job shows its progress while running and is cancelled', async () => {
-  const id = await prefilterChain(page, { levels: 11, base_size: 2048, samples: 16384, status: 'running' });
+  const id = await prefilterChain(page, { levels: 11, base_size: 2048, samples: 1024, status: 'running' });
   assert.ok(await page.locator('#prefilter-cancel').isEnabled());
   // A row of level 1 done: the bar and the status move past 0 while it runs.
   await page.waitForFunction(() => parseFloat(document.querySelector('#prefilter-progress').style.width) > 0, null, { timeout: 30000 });
