@@ -36,9 +36,10 @@ inline constexpr Range<double> kConductorK{0.0, 20.0};
 inline constexpr Range<double> kCoordinate{-1e6, 1e6};
 inline constexpr Range<double> kSize{1e-6, 1e6};  // sphere radius, mesh scale
 inline constexpr Range<double> kRotationDeg{-360.0, 360.0};
-inline constexpr Range<double> kFovDeg{1.0, 179.0};  // vertical field of view
+inline constexpr Range<double> kFovDeg{1.0, 179.0};         // vertical field of view
 inline constexpr Range<double> kElevationDeg{-89.0, 89.0};  // a framed camera's, off the poles: +z stays up
 inline constexpr Range<double> kFitMargin{0.1, 100.0};      // a framed object's radius over the view's
+inline constexpr Range<int64_t> kTurntableFrames{1, 720};   // frames of one turntable
 
 // Lighting.
 inline constexpr Range<double> kIntensity{0.0, 1e6};

@@ -51,10 +51,22 @@ Image read_pfm(std::span<const uint8_t> bytes, const ImageLimits& limits);
 Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits);
 Image read_hdr(std::span<const uint8_t> bytes, const ImageLimits& limits);
 
-// Preview settings for 8-bit output: scale by 2^exposure, then gamma (nullopt = the sRGB curve).
+// The curve that takes scaled linear radiance to display values (engine/image/tonemap.hpp).
+enum class ToneCurve { Standard, Neutral, Agx, Aces, Reinhard };
+constexpr auto enum_entries(ToneCurve) {
+  return std::to_array<EnumEntry<ToneCurve>>({{ToneCurve::Standard, "standard"},
+                                              {ToneCurve::Neutral, "neutral"},
+                                              {ToneCurve::Agx, "agx"},
+                                              {ToneCurve::Aces, "aces"},
+                                              {ToneCurve::Reinhard, "reinhard"}});
+}
+
+// Preview settings for 8-bit output: scale by 2^exposure, apply `curve`, then gamma (nullopt = the
+// sRGB curve).
 struct ToneMap {
   float exposure = 0.0f;
   std::optional<float> gamma;
+  ToneCurve curve = ToneCurve::Standard;
 };
 
 enum class ExrCompression { Zip, None };  // None: several times faster to write, for noisy images
