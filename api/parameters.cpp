@@ -117,6 +117,12 @@ void add_request_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(query(sh + ".png", "get", "width"), kShImageWidth));
   d.push_back(field_doc({"components", "parameters", "Exposure", "schema"}, kExposure));
   d.push_back(field_doc({"components", "parameters", "Gamma", "schema"}, kGamma));
+  d.push_back(
+      enum_doc({"components", "parameters", "ToneMapping", "schema"}, std::optional(kToneMapping.fallback)));
+  d.push_back(
+      enum_doc({"components", "parameters", "RenderToneMapping", "schema"}, std::optional<ToneCurve>()));
+  d.push_back(enum_doc(schema("RenderRequest", {"properties", kRenderToneMapping.name}),
+                       std::optional(kRenderToneMapping.fallback)));
   const std::string fresnel = "/api/v1/fresnel";
   d.push_back(range_doc(query(fresnel, "get", "eta_i"), limits::kFresnelIndex, 1.0));
   d.push_back(range_doc(query(fresnel, "get", "eta_t"), limits::kFresnelIndex));

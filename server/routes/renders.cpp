@@ -79,7 +79,7 @@ void list(const App& app, httplib::Response& res) {
 
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
-  const auto params = api::parse_preview_params(req.params);
+  const auto params = api::parse_preview_params(req.params, ImageFormat::Png, job->request().tone_mapping);
   const RenderImage current = job->image();
   if (!current.image)
     throw api::ApiError(
