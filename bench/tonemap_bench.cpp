@@ -26,7 +26,8 @@ const Image& picture() {
 
 void BM_ToneMapRgb8(benchmark::State& state, ToneCurve curve) {
   const ToneMap tone{.exposure = 0.0f, .gamma = std::nullopt, .curve = curve};
-  for (auto _ : state) benchmark::DoNotOptimize(tone_map_rgb8(picture(), tone));
+  const Image& image = picture();  // made before the clock starts
+  for (auto _ : state) benchmark::DoNotOptimize(tone_map_rgb8(image, tone));
   state.SetItemsProcessed(state.iterations() * picture().pixel_count());
 }
 

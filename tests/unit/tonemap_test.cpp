@@ -144,11 +144,14 @@ TEST(ToneMap, NanNegativeAndHugeValuesAreBlackOrWhite) {
   }
 }
 
-// The table search rounds as lround(255 * encode(x)) does, at every code.
+// The table lookup rounds as lround(255 * encode(x)) does, at every code: on an even ramp and on a
+// geometric one down to 1e-9; also for a gamma far from the sRGB curve's (0.2: many codes per bin).
 TEST(ToneMap, DisplayEncodingRoundsToTheNearestCode) {
-  const ToneMapper srgb({}), gamma2({.gamma = 2.0f});
-  for (int i = 0; i <= 4000; ++i) {
-    const float x = float(i) / 4000.0f;
+  const ToneMapper srgb({}), gamma2({.gamma = 2.0f}), gamma02({.gamma = 0.2f});
+  std::vector<float> ramp;
+  for (int i = 0; i <= 4000; ++i) ramp.push_back(float(i) / 4000.0f);
+  for (float x = 1e-9f; x < 1.0f; x *= 1.01f) ramp.push_back(x);
+  for (const float x : ramp) {
     const float px[3] = {x, x, x};
     uint8_t out[3];
     srgb(px, out);
@@ -156,6 +159,8 @@ TEST(ToneMap, DisplayEncodingRoundsToTheNearestCode) {
     EXPECT_NEAR(out[0], s * 255.0, 0.5 + 1e-4) << x;
     gamma2(px, out);
     EXPECT_NEAR(out[0], std::sqrt(double(x)) * 255.0, 0.5 + 1e-4) << x;
+    gamma02(px, out);
+    EXPECT_NEAR(out[0], std::pow(double(x), 5.0) * 255.0, 0.5 + 1e-4) << x;
   }
 }
 

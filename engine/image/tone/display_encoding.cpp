@@ -17,6 +17,15 @@ DisplayEncoding::DisplayEncoding(std::optional<float> gamma) {
     const double encoded = (double(k) - 0.5) / 255.0;
     starts_[k] = float(gamma ? std::pow(encoded, double(*gamma)) : srgb_decode(encoded));
   }
+  for (size_t bin = 0; bin < kBins; ++bin)
+    first_code_[bin] = search(std::bit_cast<float>(uint32_t((kFirstBin + bin) << kMantissaShift)));
+}
+
+uint8_t DisplayEncoding::search(float linear) const {
+  int code = 0;
+  for (int step = 128; step > 0; step >>= 1)
+    if (linear >= starts_[size_t(code + step)]) code += step;
+  return uint8_t(code);
 }
 
 }  // namespace lp::tone
