@@ -45,8 +45,8 @@ std::string image_params_help(ToneOption tone) {
                      fmt::format("png only: scale by 2^STOPS first, in [{}, {}] (default {})",
                                  api::kExposure.range.min, api::kExposure.range.max, d.tone.exposure)) +
          option_line("--tone-mapping NAME",
-                     fmt::format("png only: the tone curve after the exposure, {} (default {})",
-                                 enum_names_joined<ToneCurve>(), enum_name(curve))) +
+                     fmt::format("png only: the tone curve after the exposure (default {}):\n{}",
+                                 enum_name(curve), enum_names_joined<ToneCurve>())) +
          option_line("--gamma G", fmt::format("png only: gamma in (0, {}] (default: the sRGB curve)",
                                               api::kGamma.range.max));
 }
