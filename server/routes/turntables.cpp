@@ -33,12 +33,6 @@ std::shared_ptr<TurntableJob> find_turntable(const App& app, const std::string& 
   return job;
 }
 
-// The tone map of the query, its curve `neutral` unless the query names one.
-ToneMap turntable_tone(const httplib::Request& req, ToneMap tone) {
-  if (!req.has_param("tone_mapping")) tone.curve = ToneCurve::Neutral;
-  return tone;
-}
-
 // The frames finished so far; 409 no_image_yet before the first.
 std::vector<std::shared_ptr<const Image>> finished_frames(const TurntableJob& job) {
   auto frames = job.frames();
@@ -107,15 +101,15 @@ void frame(App& app, const httplib::Request& req, httplib::Response& res) {
   auto memory = app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()) +
                                        EnvMap::image_bytes(pixels.width(), pixels.height()),
                                    MemoryUse::Transient, "encoding a turntable frame");
-  send_reserved(res,
-                write_image(fit_longest_side(pixels, size), params.format, turntable_tone(req, params.tone)),
-                format_mime_type(params.format), std::move(memory));
+  send_reserved(
+      res, write_image(fit_longest_side(pixels, size), params.format, api::parse_turntable_tone(req.params)),
+      format_mime_type(params.format), std::move(memory));
 }
 
 void zip(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const auto size = api::parse_image_size(req.params);
-  const ToneMap tone = turntable_tone(req, api::parse_tone_map(req.params));
+  const ToneMap tone = api::parse_turntable_tone(req.params);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "zipping a turntable's frames");
   const std::span<const render::Camera> cameras(job->cameras().data(), frames.size());
@@ -127,7 +121,7 @@ void sheet(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const ImageFormat format = api::parse_eight_bit_format(req.params);
   const auto size = api::parse_image_size(req.params);
-  const ToneMap tone = turntable_tone(req, api::parse_tone_map(req.params));
+  const ToneMap tone = api::parse_turntable_tone(req.params);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "a turntable's contact sheet");
   send_reserved(res, frames_contact_sheet(frames, size, tone, format), format_mime_type(format),
@@ -138,7 +132,7 @@ void animation(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const auto size = api::parse_image_size(req.params);
   const int fps = api::parse_animation_fps(req.params);
-  const ToneMap tone = turntable_tone(req, api::parse_tone_map(req.params));
+  const ToneMap tone = api::parse_turntable_tone(req.params);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "a turntable's animation");
   const Frames8 frames8 = frames_rgb8(frames, size, tone);

@@ -249,6 +249,10 @@ TEST(TurntableApi, BadFieldsAreRefusedByName) {
   const Reply fps = get(turntable_url() + "/animation.webp?fps=0");
   EXPECT_EQ(fps.status, 400);
   EXPECT_NE(fps.body.find("'fps'"), std::string::npos) << fps.body;
+  const Reply curve = get(turntable_url() + "/contact-sheet?tone_mapping=filmic");
+  EXPECT_EQ(curve.status, 400);
+  EXPECT_NE(curve.body.find("'tone_mapping'"), std::string::npos) << curve.body;
+  EXPECT_EQ(get(turntable_url() + "/frames/0?tone_mapping=agx").status, 200);
   const Reply size = get(turntable_url() + "/frames/0?size=0");
   EXPECT_EQ(size.status, 400);
   EXPECT_NE(size.body.find("'size'"), std::string::npos) << size.body;
