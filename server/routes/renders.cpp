@@ -9,8 +9,10 @@
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
+#include "api/thumbnail_params.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/image/resize.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/renders/event_streams.hpp"
 #include "server/renders/queue_render.hpp"
@@ -85,7 +87,10 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
-  const Image& pixels = *current.image;
+  const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
+  const std::optional<Image> resized =
+      size ? std::optional(fit_longest_side(*current.image, size)) : std::nullopt;
+  const Image& pixels = resized ? *resized : *current.image;
   auto memory =
       app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
                          std::string("encoding a render as ") + enum_name(params.format));

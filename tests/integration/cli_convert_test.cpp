@@ -110,12 +110,12 @@ TEST(CliConvert, PngWithAToneCurve) {
 TEST(CliConvert, BadInputFailsCleanlyAndLeavesNoFile) {
   const test::TempDir dir;
   const auto source = test::envmap_path("forest.exr").string();
-  const test::CliRun jpeg = test::run_cli({"convert", source, "forest.jpg"}, dir.path());
-  EXPECT_EQ(jpeg.exit_status, 2);
+  const test::CliRun tiff = test::run_cli({"convert", source, "forest.tif"}, dir.path());
+  EXPECT_EQ(tiff.exit_status, 2);
   EXPECT_EQ(
-      jpeg.err,
-      "error: bad_request: cannot tell an image format from the name 'forest.jpg': give --format (png, exr, "
-      "pfm, hdr)\n");
+      tiff.err,
+      "error: bad_request: cannot tell an image format from the name 'forest.tif': give --format (png, exr, "
+      "pfm, hdr, jpeg, webp)\n");
   const test::CliRun gamma = test::run_cli({"convert", source, "forest.png", "--gamma", "0"}, dir.path());
   EXPECT_EQ(gamma.exit_status, 2);
   EXPECT_EQ(gamma.err,
