@@ -237,8 +237,6 @@ void add_turntable_parameters(std::vector<Doc>& d) {
   const std::string root = "/api/v1/turntables/{id}";
   d.push_back(field_doc(query(root + "/animation.webp", "get", "fps"), kAnimationFps));
   d.push_back({query(root + "/contact-sheet", "get", "format"), eight_bit_format_names(), {}, {}, "png"});
-  for (const char* picture : {"/frames/{index}", "/frames.zip", "/contact-sheet", "/animation.webp"})
-    d.push_back(enum_doc(query(root + picture, "get", "tone_mapping"), std::optional(kTurntableToneCurve)));
 }
 
 }  // namespace

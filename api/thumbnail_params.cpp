@@ -1,7 +1,5 @@
 #include "api/thumbnail_params.hpp"
 
-#include "api/preview_params.hpp"
-
 namespace lp::api {
 
 std::optional<int> parse_image_size(const Query& q) {
@@ -13,12 +11,6 @@ std::optional<int> parse_image_size(const Query& q) {
 int parse_animation_fps(const Query& q) {
   const NumberField& f = kAnimationFps;
   return int(query_int(q, f.name, int64_t(*f.fallback), int64_t(f.range.min), int64_t(f.range.max)));
-}
-
-ToneMap parse_turntable_tone(const Query& q) {
-  ToneMap tone = parse_tone_map(q);
-  tone.curve = query_enum(q, "tone_mapping", kTurntableToneCurve);
-  return tone;
 }
 
 std::vector<std::string> eight_bit_format_names() {

@@ -1,7 +1,7 @@
 // Turntables: POST /api/v1/turntables queues the frames of an orbit round a framed model as one job;
 // status (with every frame's camera), cancel / remove, the list; each frame as an image, and the frames
 // together as a zip, a contact sheet and an animated WebP. 8-bit answers are tone mapped with the
-// `neutral` curve unless the query names another.
+// request's `tone_mapping` (default `neutral`) unless the query names another curve.
 #include <fmt/format.h>
 
 #include <charconv>
@@ -90,7 +90,8 @@ int frame_index(const TurntableJob& job, const std::string& text) {
 void frame(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const int index = frame_index(*job, path_param(req, 2));
-  const auto params = api::parse_preview_params(req.params);
+  const auto params =
+      api::parse_preview_params(req.params, ImageFormat::Png, job->request().render.tone_mapping);
   const auto size = api::parse_image_size(req.params);
   const auto frames = job->frames();
   if (size_t(index) >= frames.size())
@@ -101,15 +102,14 @@ void frame(App& app, const httplib::Request& req, httplib::Response& res) {
   auto memory = app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()) +
                                        EnvMap::image_bytes(pixels.width(), pixels.height()),
                                    MemoryUse::Transient, "encoding a turntable frame");
-  send_reserved(
-      res, write_image(fit_longest_side(pixels, size), params.format, api::parse_turntable_tone(req.params)),
-      format_mime_type(params.format), std::move(memory));
+  send_reserved(res, write_image(fit_longest_side(pixels, size), params.format, params.tone),
+                format_mime_type(params.format), std::move(memory));
 }
 
 void zip(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const auto size = api::parse_image_size(req.params);
-  const ToneMap tone = api::parse_turntable_tone(req.params);
+  const ToneMap tone = api::parse_tone_map(req.params, job->request().render.tone_mapping);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "zipping a turntable's frames");
   const std::span<const render::Camera> cameras(job->cameras().data(), frames.size());
@@ -121,7 +121,7 @@ void sheet(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const ImageFormat format = api::parse_eight_bit_format(req.params);
   const auto size = api::parse_image_size(req.params);
-  const ToneMap tone = api::parse_turntable_tone(req.params);
+  const ToneMap tone = api::parse_tone_map(req.params, job->request().render.tone_mapping);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "a turntable's contact sheet");
   send_reserved(res, frames_contact_sheet(frames, size, tone, format), format_mime_type(format),
@@ -132,7 +132,7 @@ void animation(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_turntable(app, path_param(req, 1));
   const auto size = api::parse_image_size(req.params);
   const int fps = api::parse_animation_fps(req.params);
-  const ToneMap tone = api::parse_turntable_tone(req.params);
+  const ToneMap tone = api::parse_tone_map(req.params, job->request().render.tone_mapping);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "a turntable's animation");
   const Frames8 frames8 = frames_rgb8(frames, size, tone);

@@ -41,6 +41,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   parse([&] { lp::api::parse_image_size(q); });
   parse([&] { lp::api::parse_animation_fps(q); });
   parse([&] { lp::api::parse_eight_bit_format(q); });
-  parse([&] { lp::api::parse_turntable_tone(q); });
   return 0;
 }
