@@ -1,0 +1,81 @@
+#include "cli/turntable_files.hpp"
+
+#include <fmt/format.h>
+
+#include "api/api_error.hpp"
+#include "api/engine_validation.hpp"
+#include "cli/output.hpp"
+#include "engine/image/image_io.hpp"
+#include "engine/render/scene_view.hpp"
+
+namespace lp::cli {
+namespace {
+
+api::Json vec3(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+api::Json matrix_rows(const std::array<float, 16>& m) {
+  api::Json rows = api::Json::array();
+  for (size_t r = 0; r < 4; ++r) rows.push_back({m[4 * r], m[4 * r + 1], m[4 * r + 2], m[4 * r + 3]});
+  return rows;
+}
+
+void write_atomically(const std::filesystem::path& file, std::string_view bytes) {
+  Output out(file.string());
+  out.write(bytes);
+  out.finish();
+}
+
+}  // namespace
+
+void require_turntable_folder(const std::optional<std::string>& folder) {
+  if (!folder || *folder == "-")
+    throw api::ApiError(api::ErrorCode::BadRequest,
+                        "--turntable writes its frames into a folder: give -o DIR");
+  require_folder(*folder);
+}
+
+TurntableFiles::TurntableFiles(std::filesystem::path folder, const render::Turntable& turntable,
+                               const SceneRender& scene, const api::PreviewParams& image)
+    : folder_(std::move(folder)),
+      image_(image),
+      width_(scene.request.settings.width),
+      height_(scene.request.settings.height) {
+  const float aspect = float(width_) / float(height_);
+  render::SceneDesc framed = scene.request.scene;
+  framed.camera.gltf.reset();
+  for (int i = 0; i < turntable.frames; ++i) {
+    framed.camera.fit = render::turntable_fit(turntable, i);
+    api::as_invalid_field([&] { cameras_.push_back(render::resolve_camera(framed, aspect)); });
+  }
+}
+
+std::string TurntableFiles::frame_name(int64_t index) const {
+  return fmt::format("frame_{:04}.{}", index, enum_name(image_.format));
+}
+
+void TurntableFiles::write(int64_t index, const Image& frame) const {
+  const std::vector<uint8_t> bytes = write_image(frame, image_.format, image_.tone);
+  write_atomically(folder_ / frame_name(index),
+                   std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+void TurntableFiles::finish() const {
+  api::Json cameras = api::Json::array();
+  for (size_t i = 0; i < cameras_.size(); ++i) {
+    const render::Camera& c = cameras_[i];
+    cameras.push_back({{"index", i},
+                       {"file", frame_name(int64_t(i))},
+                       {"position", vec3(c.position)},
+                       {"look_at", vec3(c.look_at)},
+                       {"up", vec3(c.up)},
+                       {"fov_deg", c.fov_deg},
+                       {"matrix", matrix_rows(render::camera_to_world(c))}});
+  }
+  const api::Json doc = {
+      {"frames", cameras_.size()}, {"width", width_}, {"height", height_}, {"cameras", cameras}};
+  write_atomically(folder_ / "cameras.json", doc.dump(2) + "\n");
+}
+
+}  // namespace lp::cli
