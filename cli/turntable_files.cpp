@@ -15,12 +15,6 @@ api::Json vec3(const Vec3& v) {
   return {v.x, v.y, v.z};
 }
 
-api::Json matrix_rows(const std::array<float, 16>& m) {
-  api::Json rows = api::Json::array();
-  for (size_t r = 0; r < 4; ++r) rows.push_back({m[4 * r], m[4 * r + 1], m[4 * r + 2], m[4 * r + 3]});
-  return rows;
-}
-
 void write_atomically(const std::filesystem::path& file, std::string_view bytes) {
   Output out(file.string());
   out.write(bytes);
@@ -38,11 +32,9 @@ void require_turntable_folder(const std::optional<std::string>& folder) {
 
 TurntableFiles::TurntableFiles(std::filesystem::path folder, const render::Turntable& turntable,
                                const SceneRender& scene, const api::PreviewParams& image)
-    : folder_(std::move(folder)),
-      image_(image),
-      width_(scene.request.settings.width),
-      height_(scene.request.settings.height) {
-  const float aspect = float(width_) / float(height_);
+    : folder_(std::move(folder)), image_(image) {
+  const auto& s = scene.request.settings;
+  const float aspect = float(s.width) / float(s.height);
   render::SceneDesc framed = scene.request.scene;
   framed.camera.gltf.reset();
   for (int i = 0; i < turntable.frames; ++i) {
@@ -66,16 +58,13 @@ void TurntableFiles::finish() const {
   for (size_t i = 0; i < cameras_.size(); ++i) {
     const render::Camera& c = cameras_[i];
     cameras.push_back({{"index", i},
-                       {"file", frame_name(int64_t(i))},
                        {"position", vec3(c.position)},
                        {"look_at", vec3(c.look_at)},
                        {"up", vec3(c.up)},
                        {"fov_deg", c.fov_deg},
-                       {"matrix", matrix_rows(render::camera_to_world(c))}});
+                       {"matrix", render::camera_to_world(c)}});
   }
-  const api::Json doc = {
-      {"frames", cameras_.size()}, {"width", width_}, {"height", height_}, {"cameras", cameras}};
-  write_atomically(folder_ / "cameras.json", doc.dump(2) + "\n");
+  write_atomically(folder_ / "cameras.json", cameras.dump(2) + "\n");
 }
 
 }  // namespace lp::cli

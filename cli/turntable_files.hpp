@@ -1,8 +1,8 @@
 #pragma once
 // The files of a turntable rendered by the tool, in the folder of -o DIR: DIR/frame_0000.png ... (each
 // written under a temporary name and renamed when complete) and DIR/cameras.json, each frame's camera as
-// a turntable's status gives it: index, file, position, look_at, up, fov_deg and matrix (the row-major
-// camera-to-world matrix in Blender's camera convention, as rows), written once every frame is.
+// a turntable's status gives it: [{index, position, look_at, up, fov_deg, matrix}], matrix the row-major
+// 4x4 camera-to-world matrix in Blender's camera convention (16 numbers), written once every frame is.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -33,7 +33,6 @@ class TurntableFiles {
  private:
   std::filesystem::path folder_;
   api::PreviewParams image_;
-  int width_, height_;
   std::vector<render::Camera> cameras_;
 };
 
