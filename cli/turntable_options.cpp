@@ -46,11 +46,12 @@ std::optional<render::Turntable> take_turntable(Arguments& args) {
 
 std::string turntable_help() {
   const render::Turntable d;
-  return option_line("--turntable N",
-                     fmt::format("render N frames orbiting the framed scene about +z, in [{}, {}], into the "
-                                 "folder -o DIR:\nDIR/frame_0000.png ... and DIR/cameras.json (each "
-                                 "frame's camera)",
-                                 limits::kTurntableFrames.min, limits::kTurntableFrames.max)) +
+  return option_line(
+             "--turntable N",
+             fmt::format("render N frames, in [{}, {}], orbiting the framed scene about +z, into\n"
+                         "the folder -o DIR: DIR/frame_0000.png ... (--format) and DIR/cameras.json,\n"
+                         "each frame's camera as a turntable's status gives it",
+                         limits::kTurntableFrames.min, limits::kTurntableFrames.max)) +
          option_line("--azimuth-start-deg A", fmt::format("the first frame's azimuth (default {}: from the "
                                                           "front, -y; 90: from +x)",
                                                           d.azimuth_start_deg)) +
