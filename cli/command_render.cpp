@@ -38,11 +38,11 @@ std::string help() {
          "else\n"
          "a line at each 10%.\n\n"
          "Other options set the request's top-level fields, replacing the file's: --width, --height, --spp,\n"
-         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --background, --clamp, --passes, and\n"
-         "--envmap (a path relative to the working directory).\n\n" +
+         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping, --background, --clamp,\n"
+         "--passes, and --envmap (a path relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
-         image_params_help() + request_options_help() + turntable_help() +
+         image_params_help(ToneOption::RequestField) + request_options_help() + turntable_help() +
          option_line("--threads N",
                      fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
                                  api::kThreads.range.max, api::kThreads.default_text)) +
@@ -91,7 +91,8 @@ void run(Arguments& args) {
   const ProgressStyle progress = progress_style(args.take_switch("quiet"));
   const auto file = args.take("output");
   const auto turntable = take_turntable(args);
-  const api::PreviewParams image = take_image_params(args, turntable ? std::nullopt : file);
+  api::PreviewParams image =
+      take_image_params(args, turntable ? std::nullopt : file, ToneOption::RequestField);
   const auto threads = thread_limit(args);
   const RequestOptions request = take_request_options(args);
   api::Json fields = args.take_rest_as_json();
@@ -103,6 +104,7 @@ void run(Arguments& args) {
     if (file) require_folder_of(*file);
   }
   const SceneRender scene = read_scene(args.positional()[0], fields, request.objects, api::RequestLimits{});
+  image.tone.curve = scene.request.tone_mapping;
   if (turntable) {
     TurntableFiles out(*file, *turntable, scene, image);
     render_frames(scene, out.cameras(), progress,
