@@ -103,10 +103,11 @@ void run(Arguments& args) {
     refuse_binary_to_terminal(file);
     if (file) require_folder_of(*file);
   }
-  const SceneRender scene = read_scene(args.positional()[0], fields, request.objects, api::RequestLimits{});
+  const SceneRender scene =
+      read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
   if (turntable) {
-    TurntableFiles out(*file, *turntable, scene, image);
+    TurntableFiles out(*file, *scene.turntable, scene, image);
     render_frames(scene, out.cameras(), progress,
                   [&](int64_t i, const Image& frame) { out.write(i, frame); });
     out.finish();

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "api/api_error.hpp"
+#include "api/turntable_request.hpp"
 #include "cli/map_argument.hpp"
 #include "engine/core/error.hpp"
 #include "engine/model/model_loader.hpp"
@@ -61,7 +62,8 @@ api::Json model_body(const std::filesystem::path& model) {
 }
 
 SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
-                       const ExtraObjects& extra_objects, const api::RequestLimits& limits) {
+                       const ExtraObjects& extra_objects, const std::optional<api::Json>& turntable,
+                       const api::RequestLimits& limits) {
   const bool is_model = !model_format(file).empty();
   api::Json body = is_model ? model_body(file) : read_json(file);
   if (body.is_object()) body.update(overrides);
@@ -69,7 +71,15 @@ SceneRender read_scene(const std::filesystem::path& file, const api::Json& overr
   // A model file's own path is already relative to the working directory, as is a map named on the
   // command line.
   const std::filesystem::path folder = is_model ? std::filesystem::path() : file.parent_path();
-  SceneRender r{api::parse_render_request(body, limits), nullptr};
+  SceneRender r;
+  if (turntable) {
+    if (body.is_object()) body["turntable"] = *turntable;
+    api::TurntableRequest t = api::parse_turntable_request(body, limits);
+    r.request = std::move(t.render);
+    r.turntable = t.turntable;
+  } else {
+    r.request = api::parse_render_request(body, limits);
+  }
   r.envmap = load_scene_map(r.request.envmap, overrides.contains("envmap") ? "" : folder);
   load_meshes(r.request.scene, folder, api::model_limits(limits));
   return r;

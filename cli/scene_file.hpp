@@ -8,15 +8,18 @@
 // read is a 400 invalid_field naming the field, as the API answers a missing map or a bad model.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "api/render_request.hpp"
 #include "engine/envmap/envmap.hpp"
+#include "engine/render/turntable.hpp"
 
 namespace lp::cli {
 
 struct SceneRender {
   api::RenderRequest request;  // its meshes' models loaded
+  std::optional<render::Turntable> turntable;
   std::shared_ptr<const EnvMap> envmap;
 };
 
@@ -32,9 +35,11 @@ struct ExtraObjects {
 
 // `file`: a model file (model_format() names its format) or a scene file. `overrides`: top-level fields
 // given on the command line, which replace the body's; a relative "envmap" path given there is taken from
-// the working directory. `extra_objects` are appended to the body's scene objects (a scene without
-// a list of objects, a preset, is then refused: bad_request).
+// the working directory. With `turntable`, the body is that of a turntable request (that object its
+// `turntable` field), read by its parser. `extra_objects` are appended to the body's scene objects (a scene
+// without a list of objects, a preset, is then refused: bad_request).
 SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
-                       const ExtraObjects& extra_objects, const api::RequestLimits& limits);
+                       const ExtraObjects& extra_objects, const std::optional<api::Json>& turntable,
+                       const api::RequestLimits& limits);
 
 }  // namespace lp::cli

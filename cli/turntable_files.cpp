@@ -4,16 +4,13 @@
 
 #include "api/api_error.hpp"
 #include "api/engine_validation.hpp"
+#include "api/turntable_schema.hpp"
 #include "cli/output.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/render/scene_view.hpp"
 
 namespace lp::cli {
 namespace {
-
-api::Json vec3(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
 
 void write_atomically(const std::filesystem::path& file, std::string_view bytes) {
   Output out(file.string());
@@ -54,17 +51,7 @@ void TurntableFiles::write(int64_t index, const Image& frame) const {
 }
 
 void TurntableFiles::finish() const {
-  api::Json cameras = api::Json::array();
-  for (size_t i = 0; i < cameras_.size(); ++i) {
-    const render::Camera& c = cameras_[i];
-    cameras.push_back({{"index", i},
-                       {"position", vec3(c.position)},
-                       {"look_at", vec3(c.look_at)},
-                       {"up", vec3(c.up)},
-                       {"fov_deg", c.fov_deg},
-                       {"matrix", render::camera_to_world(c)}});
-  }
-  write_atomically(folder_ / "cameras.json", cameras.dump(2) + "\n");
+  write_atomically(folder_ / "cameras.json", api::describe_turntable_cameras(cameras_).dump(2) + "\n");
 }
 
 }  // namespace lp::cli

@@ -3,45 +3,29 @@
 #include <fmt/format.h>
 
 #include "api/api_error.hpp"
-#include "api/engine_validation.hpp"
 #include "cli/help.hpp"
 #include "engine/core/limits.hpp"
+#include "engine/render/turntable.hpp"
 
 namespace lp::cli {
 namespace {
 
-constexpr std::string_view kPrefix = "turntable";
 // The orbit's options (without dashes) besides --turntable itself, which gives `frames`.
 const std::vector<std::string_view> kOrbit = {"azimuth-start-deg", "azimuth-step-deg", "elevation-deg",
                                               "elevation-sweep-deg", "margin"};
 
-float angle(const api::Json& fields, const std::string& name, float fallback) {
-  return float(api::json_double(fields, name, fallback, -360, 360, std::string(kPrefix)));
-}
-
 }  // namespace
 
-std::optional<render::Turntable> take_turntable(Arguments& args) {
+std::optional<api::Json> take_turntable(Arguments& args) {
   if (!args.has("turntable")) {
     for (const std::string_view name : kOrbit)
       if (args.has(name))
         throw api::ApiError(api::ErrorCode::BadRequest, fmt::format("--{} needs --turntable N", name));
     return std::nullopt;
   }
-  api::Json fields = args.take_json(kOrbit);
-  fields["frames"] = args.take_json({"turntable"})["turntable"];
-  const std::string prefix(kPrefix);
-  render::Turntable t;
-  t.frames = int(api::json_int(fields, "frames", t.frames, limits::kTurntableFrames.min,
-                               limits::kTurntableFrames.max, prefix));
-  t.azimuth_start_deg = angle(fields, "azimuth_start_deg", t.azimuth_start_deg);
-  if (fields.contains("azimuth_step_deg")) t.azimuth_step_deg = angle(fields, "azimuth_step_deg", 0);
-  t.elevation_deg = angle(fields, "elevation_deg", t.elevation_deg);
-  t.elevation_sweep_deg = angle(fields, "elevation_sweep_deg", t.elevation_sweep_deg);
-  t.margin = float(
-      api::json_double(fields, "margin", t.margin, limits::kFitMargin.min, limits::kFitMargin.max, prefix));
-  api::as_invalid_field([&] { t.validate(prefix); });
-  return t;
+  api::Json turntable = args.take_json(kOrbit);
+  turntable["frames"] = args.take_json({"turntable"})["turntable"];
+  return turntable;
 }
 
 std::string turntable_help() {

@@ -6,13 +6,12 @@
 #include <string>
 
 #include "cli/arguments.hpp"
-#include "engine/render/turntable.hpp"
 
 namespace lp::cli {
 
-// Takes the options; nullopt without --turntable (an orbit option without it is a bad_request). Throws
-// invalid_field naming the field (turntable.frames, ...) for a value out of its range.
-std::optional<render::Turntable> take_turntable(Arguments& args);
+// Takes the options, as the `turntable` object of a turntable request (api/turntable_request.hpp, which
+// checks it); nullopt without --turntable (an orbit option without it is a bad_request).
+std::optional<api::Json> take_turntable(Arguments& args);
 
 std::string turntable_help();
 
