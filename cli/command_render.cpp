@@ -12,7 +12,6 @@
 #include "cli/image_output.hpp"
 #include "cli/output.hpp"
 #include "cli/progress_bar.hpp"
-#include "cli/render_fields.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/turntable_files.hpp"
 #include "cli/turntable_options.hpp"
@@ -38,11 +37,11 @@ std::string help() {
          "else\n"
          "a line at each 10%.\n\n"
          "Other options set the request's top-level fields, replacing the file's: --width, --height, --spp,\n"
-         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping, --background, --clamp,\n"
-         "--passes, and --envmap (a path relative to the working directory).\n\n" +
+         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping,\n"
+         "and --envmap (a path relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
-         image_params_help(ToneOption::RequestField) + request_options_help() + turntable_help() +
+         image_params_help(ToneOption::RequestField) + turntable_help() +
          option_line("--threads N",
                      fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
                                  api::kThreads.range.max, api::kThreads.default_text)) +
@@ -94,17 +93,14 @@ void run(Arguments& args) {
   api::PreviewParams image =
       take_image_params(args, turntable ? std::nullopt : file, ToneOption::RequestField);
   const auto threads = thread_limit(args);
-  const RequestOptions request = take_request_options(args);
-  api::Json fields = args.take_rest_as_json();
-  fields.update(request.fields);
+  const api::Json fields = args.take_rest_as_json();
   if (turntable) {
     require_turntable_folder(file);
   } else {
     refuse_binary_to_terminal(file);
     if (file) require_folder_of(*file);
   }
-  const SceneRender scene =
-      read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
+  const SceneRender scene = read_scene(args.positional()[0], fields, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
@@ -128,7 +124,7 @@ Command render_command() {
           kSynopsis,
           "path-trace a scene (the JSON body of POST /api/v1/renders) or a framed model to an image or a "
           "turntable",
-          {"quiet", "ground"},
+          {"quiet"},
           help,
           run};
 }
