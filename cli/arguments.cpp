@@ -21,10 +21,10 @@ std::string long_name(std::string_view letter) {
   return it->second;
 }
 
-// A number or a boolean as JSON reads it, else the text as a string.
+// A number, a boolean or an array as JSON reads it, else the text as a string.
 api::Json json_value(const std::string& text) {
   api::Json value = api::Json::parse(text, nullptr, false);
-  if (value.is_number() || value.is_boolean()) return value;
+  if (value.is_number() || value.is_boolean() || value.is_array()) return value;
   return text;
 }
 
@@ -102,6 +102,13 @@ api::Query Arguments::take_query(const std::vector<std::string_view>& names) {
   for (const std::string_view name : names)
     if (auto value = take(name)) query.emplace(api_name(name), std::move(*value));
   return query;
+}
+
+api::Json Arguments::take_json(const std::vector<std::string_view>& names) {
+  api::Json fields = api::Json::object();
+  for (const std::string_view name : names)
+    if (auto value = take(name)) fields[api_name(name)] = json_value(*value);
+  return fields;
 }
 
 api::Json Arguments::take_rest_as_json() {

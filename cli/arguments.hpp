@@ -36,14 +36,16 @@ class Arguments {
   std::string take_required(std::string_view name, std::string_view synopsis);
   // The options named (taken), as an API query.
   api::Query take_query(const std::vector<std::string_view>& names);
+  // The options named (taken), as API fields of a JSON object (values read as take_rest_as_json reads them).
+  api::Json take_json(const std::vector<std::string_view>& names);
   // An enum option, checked as the API checks an enum parameter.
   template <class E>
   requires std::is_enum_v<E> E take_enum(std::string_view name, E fallback) {
     return api::query_enum(take_query({name}), api_name(name), fallback);
   }
 
-  // Every option not taken, as API fields: as a JSON object, a value that reads as a JSON number or
-  // boolean becoming one and any other a string; or as a query.
+  // Every option not taken, as API fields: as a JSON object, a value that reads as a JSON number, boolean
+  // or array becoming one and any other a string; or as a query.
   api::Json take_rest_as_json();
   api::Query take_rest_as_query();
   // Throws bad_request naming the first option no one took.

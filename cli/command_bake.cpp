@@ -44,7 +44,7 @@ std::string help() {
              "Writes into DIR (made if missing) the bundle of image-based lighting: {} (`lightprobe sh`'s\n"
              "answer: {} bands with the irradiance), the prefiltered GGX chain (the files of POST\n"
              "/api/v1/envmaps/{{id}}/prefilter), {} (`lightprobe brdf-lut`'s table, {} texels a side) and\n"
-             "{}, every file with its conventions. A progress bar on standard error.\n\n",
+             "{}, every file with its conventions. Progress on standard error.\n\n",
              kShFile, api::kDefaultShBands, kLutFile, api::kDefaultDfgLutSize, kManifestFile) +
          option_line("--out DIR", "the folder to write (required)") +
          option_line("--projection NAME", choices(d.params.projection)) +
@@ -55,7 +55,7 @@ std::string help() {
                                           range(limits::kPrefilterBaseSize, d.params.base_size)) +
          option_line("--samples N",
                      "GGX samples a texel, " + range(limits::kPrefilterSamples, d.params.samples)) +
-         invalid_pixel_policy_help() + option_line("-q, --quiet", "no progress bar");
+         invalid_pixel_policy_help() + option_line("-q, --quiet", "no progress");
 }
 
 void write_file(const fs::path& dir, const std::string& name, std::span<const uint8_t> bytes) {
@@ -89,7 +89,7 @@ json bake_sh(const EnvMap& map, const fs::path& dir) {
           {"convention", json::parse(text)["convention"]}};
 }
 
-PrefilteredChain prefilter(const EnvMap& map, const PrefilterParams& params, bool progress) {
+PrefilteredChain prefilter(const EnvMap& map, const PrefilterParams& params, ProgressStyle progress) {
   ProgressBar bar("bake", prefilter_work_units(params), progress);
   auto chain = prefilter_chain(map, params, {nullptr, [&bar](int64_t units) { bar.advance(units); }});
   bar.finish();
@@ -97,7 +97,7 @@ PrefilteredChain prefilter(const EnvMap& map, const PrefilterParams& params, boo
 }
 
 json bake_chain(const LoadedMap& loaded, const api::PrefilterRequest& request, const fs::path& dir,
-                bool progress) {
+                ProgressStyle progress) {
   const PrefilteredChain chain = prefilter(*loaded.map, request.params, progress);
   json description;
   api::describe_prefilter(description, request, {loaded.name, ".", true, chain.source_width});
@@ -133,13 +133,13 @@ json bake_lut(const fs::path& dir) {
 void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
   const fs::path dir(args.take_required("out", kSynopsis));
-  const bool quiet = args.take_switch("quiet");
+  const ProgressStyle progress = progress_style(args.take_switch("quiet"));
   const InvalidPixelPolicy policy = take_invalid_pixel_policy(args);
   const api::PrefilterRequest request = api::parse_prefilter_request(args.take_rest_as_json().dump());
   const LoadedMap loaded = load_map(args.positional()[0], policy);
   make_folder(dir);
   const json sh = bake_sh(*loaded.map, dir);
-  const json chain = bake_chain(loaded, request, dir, !quiet);
+  const json chain = bake_chain(loaded, request, dir, progress);
   const json manifest = {
       {"map", {{"name", loaded.name}, {"source", loaded.source}, {"format", loaded.format}}},
       {"frame", chain["convention"]["frame"]},

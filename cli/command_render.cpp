@@ -1,5 +1,5 @@
-// lightprobe render SCENE.json: path-traces the scene of a render request to an image, with a progress
-// bar on standard error.
+// lightprobe render SCENE.json | MODEL: path-traces the scene of a render request, or one framed model, to
+// an image, or to the frames of a turntable, with progress on standard error.
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 
@@ -13,32 +13,41 @@
 #include "cli/output.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/scene_file.hpp"
+#include "cli/turntable_files.hpp"
+#include "cli/turntable_options.hpp"
 #include "engine/render/pass_schedule.hpp"
 #include "engine/render/renderer.hpp"
 
 namespace lp::cli {
 namespace {
 
-constexpr std::string_view kSynopsis = "render SCENE.json [options]";
+constexpr std::string_view kSynopsis = "render SCENE.json|MODEL [options]";
 
 std::string help() {
   const api::RequestLimits l;
   return "Renders SCENE.json, the JSON body of POST /api/v1/renders (the same fields, defaults, limits and\n"
-         "errors), on all cores, showing a progress bar on standard error. In the scene file, \"envmap\" is "
-         "a\n"
-         "map file (OpenEXR, PFM, Radiance HDR) or `default`, the built-in procedural sky, and a mesh's\n"
-         "\"path\" a .gltf, .glb or .obj model file; relative paths are taken from the scene file's folder.\n"
-         "Other options set the request's top-level fields, replacing the file's:\n"
-         "--width, --height, --spp, --max-depth, --seed, --mipmaps, --normal-maps, --sampling, "
-         "--tone-mapping,\n"
+         "errors), or MODEL, a .gltf, .glb or .obj file: the body whose scene is that one model with its "
+         "own\n"
+         "materials, framed by the default camera fit, under the built-in sky unless --envmap. In the scene\n"
+         "file, \"envmap\" is a map file (OpenEXR, PFM, Radiance HDR) or `default`, the built-in procedural "
+         "sky,\n"
+         "and a mesh's \"path\" a model file; relative paths are taken from the scene file's folder. Runs on "
+         "all\n"
+         "cores, showing progress on standard error: a bar with the rate and the time left on a terminal, "
+         "else\n"
+         "a line at each 10%.\n\n"
+         "Other options set the request's top-level fields, replacing the file's: --width, --height, --spp,\n"
+         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping,\n"
          "and --envmap (a path relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
-         image_params_help(ToneOption::RequestField) +
+         image_params_help(ToneOption::RequestField) + turntable_help() +
          option_line("--threads N",
                      fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
                                  api::kThreads.range.max, api::kThreads.default_text)) +
-         option_line("-q, --quiet", "no progress bar") + output_help();
+         option_line("-q, --quiet", "no progress") + output_help() +
+         "\nAn image is not written to a terminal: give -o FILE or redirect standard output (-o - insists).\n"
+         "A missing output folder is refused before rendering.\n";
 }
 
 std::optional<tbb::global_control> thread_limit(Arguments& args) {
@@ -50,40 +59,74 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
                                             size_t(threads));
 }
 
-Image render(const SceneRender& scene, bool progress) {
-  const auto& r = scene.request;
-  render::Renderer renderer(r.scene, r.lighting, r.settings, scene.envmap);
-  // The passes a job runs (an adaptive render's uniform warm-up first), each up to all of the spp.
-  ProgressBar bar("render", int64_t(renderer.tile_count()) * r.settings.spp, progress);
-  const std::atomic<bool> never{false};
-  for (const render::RenderPass& pass : render::render_passes(r.settings, r.settings.spp)) {
-    const auto on_tile = [&bar, spp = pass.spp] { bar.advance(spp); };
-    renderer.render(pass, never, on_tile);
+// Renders the frames (the same scene seen by each camera) one after the other, with one progress over
+// all of them, handing each image to `done` as it finishes.
+template <class Done>
+void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras, ProgressStyle style,
+                   Done&& done) {
+  const render::RenderSettings& s = r.request.settings;
+  const int64_t frames = int64_t(cameras.size());
+  std::optional<ProgressBar> bar;
+  render::SceneDesc scene = r.request.scene;
+  for (int64_t i = 0; i < frames; ++i) {
+    scene.camera = cameras[size_t(i)];
+    render::Renderer renderer(scene, r.request.lighting, s, r.envmap);
+    // Progress in tile-samples: each pass adds its spp to every tile (an adaptive pass as a mean).
+    const int64_t tiles = renderer.tile_count();
+    if (!bar)
+      bar.emplace("render", frames * tiles * s.spp, style,
+                  ProgressBar::Rate{double(s.width) * s.height / double(tiles), "samples"});
+    if (frames > 1) bar->set_label(fmt::format("render frame {}/{}", i + 1, frames));
+    const std::atomic<bool> never{false};
+    for (const render::RenderPass& pass : render::render_passes(s, s.spp))
+      renderer.render(pass, never, [&bar, spp = pass.spp] { bar->advance(spp); });
+    done(i, renderer.image());
   }
-  bar.finish();
-  return renderer.image();
+  if (bar) bar->finish();
 }
 
 void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
-  const bool quiet = args.take_switch("quiet");
+  const ProgressStyle progress = progress_style(args.take_switch("quiet"));
   const auto file = args.take("output");
-  api::PreviewParams image = take_image_params(args, file, ToneOption::RequestField);
+  const auto turntable = take_turntable(args);
+  api::PreviewParams image =
+      take_image_params(args, turntable ? std::nullopt : file, ToneOption::RequestField);
   const auto threads = thread_limit(args);
-  const SceneRender scene =
-      read_scene_file(args.positional()[0], args.take_rest_as_json(), api::RequestLimits{});
+  const api::Json fields = args.take_rest_as_json();
+  if (turntable) {
+    require_turntable_folder(file);
+  } else {
+    refuse_binary_to_terminal(file);
+    if (file) require_folder_of(*file);
+  }
+  const SceneRender scene = read_scene(args.positional()[0], fields, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
-  const auto bytes = write_image(render(scene, !quiet), image.format, image.tone);
-  Output out(file);
-  out.write(bytes);
-  out.finish();
+  if (turntable) {
+    TurntableFiles out(*file, *scene.turntable, scene, image);
+    render_frames(scene, out.cameras(), progress,
+                  [&](int64_t i, const Image& frame) { out.write(i, frame); });
+    out.finish();
+    return;
+  }
+  const std::vector<render::Camera> one = {scene.request.scene.camera};
+  render_frames(scene, one, progress, [&](int64_t, const Image& picture) {
+    Output out(file);
+    out.write(write_image(picture, image.format, image.tone));
+    out.finish();
+  });
 }
 
 }  // namespace
 
 Command render_command() {
-  return {"render",  kSynopsis, "path-trace a scene (the JSON body of POST /api/v1/renders) to an image",
-          {"quiet"}, help,      run};
+  return {"render",
+          kSynopsis,
+          "path-trace a scene (the JSON body of POST /api/v1/renders) or a framed model to an image or a "
+          "turntable",
+          {"quiet"},
+          help,
+          run};
 }
 
 }  // namespace lp::cli

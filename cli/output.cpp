@@ -6,9 +6,27 @@
 #include <cerrno>
 #include <cstring>
 
+#include "api/api_error.hpp"
 #include "engine/core/error.hpp"
 
 namespace lp::cli {
+
+void refuse_binary_to_terminal(const std::optional<std::string>& file) {
+  if (!file && isatty(STDOUT_FILENO))
+    throw api::ApiError(api::ErrorCode::BadRequest,
+                        "standard output is a terminal: give -o FILE, or redirect standard output to a file "
+                        "or a pipe (-o - writes the image to the terminal anyway)");
+}
+
+void require_folder(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder.empty() ? "." : folder, error))
+    throw Error(ErrorKind::NotFound, fmt::format("the output folder '{}' does not exist", folder.string()));
+}
+
+void require_folder_of(const std::string& file) {
+  if (file != "-") require_folder(std::filesystem::path(file).parent_path());
+}
 
 Output::Output(const std::optional<std::string>& file) {
   if (!file || *file == "-") {

@@ -11,6 +11,14 @@
 
 namespace lp::cli {
 
+// Checks made before any work, so that a long render is not wasted on an output it cannot write.
+// Refuses (bad_request) to write binary data to standard output when it is a terminal and no -o was given;
+// `-o -` asks for it anyway.
+void refuse_binary_to_terminal(const std::optional<std::string>& file);
+// Refuses (not_found) a folder that does not exist, for an output file inside it or as the folder itself.
+void require_folder(const std::filesystem::path& folder);
+void require_folder_of(const std::string& file);
+
 class Output {
  public:
   explicit Output(const std::optional<std::string>& file);

@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "api/api_error.hpp"
+#include "api/turntable_request.hpp"
 #include "cli/map_argument.hpp"
 #include "engine/core/error.hpp"
 #include "engine/model/model_loader.hpp"
@@ -43,12 +44,27 @@ void load_meshes(render::SceneDesc& scene, const std::filesystem::path& base, co
 
 }  // namespace
 
-SceneRender read_scene_file(const std::filesystem::path& file, const api::Json& overrides,
-                            const api::RequestLimits& limits) {
-  api::Json body = read_json(file);
+api::Json model_body(const std::filesystem::path& model) {
+  return {{"envmap", "default"}, {"scene", {{"objects", {{{"type", "mesh"}, {"path", model.string()}}}}}}};
+}
+
+SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
+                       const std::optional<api::Json>& turntable, const api::RequestLimits& limits) {
+  const bool is_model = !model_format(file).empty();
+  api::Json body = is_model ? model_body(file) : read_json(file);
   if (body.is_object()) body.update(overrides);
-  const std::filesystem::path folder = file.parent_path();
-  SceneRender r{api::parse_render_request(body, limits), nullptr};
+  // A model file's own path is already relative to the working directory, as is a map named on the
+  // command line.
+  const std::filesystem::path folder = is_model ? std::filesystem::path() : file.parent_path();
+  SceneRender r;
+  if (turntable) {
+    if (body.is_object()) body["turntable"] = *turntable;
+    api::TurntableRequest t = api::parse_turntable_request(body, limits);
+    r.request = std::move(t.render);
+    r.turntable = t.turntable;
+  } else {
+    r.request = api::parse_render_request(body, limits);
+  }
   r.envmap = load_scene_map(r.request.envmap, overrides.contains("envmap") ? "" : folder);
   load_meshes(r.request.scene, folder, api::model_limits(limits));
   return r;

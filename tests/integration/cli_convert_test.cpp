@@ -176,7 +176,7 @@ TEST(CliConvert, ProjectionsAndBackKeepThePower) {
 TEST(CliConvert, BadProjectionsFailWithTheApisErrors) {
   const test::TempDir dir;
   const std::string source = test::envmap_path("forest.exr").string();  // 256 x 128
-  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+  const test::CliRefusals cases = {
       {{"--projection", "mercator"},
        "invalid_field: field 'projection': 'mercator' is not one of: latlong, cube, cross, octahedral, "
        "equal-area"},
@@ -195,14 +195,7 @@ TEST(CliConvert, BadProjectionsFailWithTheApisErrors) {
       {{"--projection", "cross", "--face", "px"},
        "invalid_field: field 'face': applies to projection=cube only"},
   };
-  for (const auto& [options, message] : cases) {
-    std::vector<std::string> args = {"convert", source, "out.exr"};
-    args.insert(args.end(), options.begin(), options.end());
-    const test::CliRun run = test::run_cli(args, dir.path());
-    EXPECT_EQ(run.exit_status, 2) << message;
-    EXPECT_EQ(run.err, "error: " + message + "\n");
-  }
-  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  test::expect_cli_refusals({"convert", source, "out.exr"}, cases, dir.path());
 }
 
 }  // namespace
