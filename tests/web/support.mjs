@@ -2,7 +2,7 @@
 // holding a real map, Debian's Chromium through playwright-core, and waits on the page.
 import { before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, rmSync, existsSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -217,4 +217,22 @@ export function csvRows(bytes) {
   assert.ok(text.endsWith('\r\n') && !/[^\r]\n/.test(text), 'CSV lines end in CRLF');
   assert.ok(!text.includes('"'), 'no quoted values expected');
   return text.slice(0, -2).split('\r\n').map((line) => line.split(','));
+}
+
+// The RGBA bytes of what an <img> (at its natural size) or a <canvas> shows: {width, height, data}.
+export const pixelsOf = (page, selector) => page.$eval(selector, (source) => {
+  const canvas = document.createElement('canvas');
+  [canvas.width, canvas.height] = source instanceof HTMLImageElement ? [source.naturalWidth, source.naturalHeight] : [source.width, source.height];
+  const context = canvas.getContext('2d');
+  context.drawImage(source, 0, 0);
+  return { width: canvas.width, height: canvas.height, data: [...context.getImageData(0, 0, canvas.width, canvas.height).data] };
+});
+
+// The largest value the server accepts for one of its integer flags (--NAME), as its refusal of a
+// value past the flag's range states it.
+export function flagMaximum(flag) {
+  const answer = spawnSync(serverBin, [`--${flag}`, '0'], { encoding: 'utf8', timeout: 10000 });
+  const range = new RegExp(`--${flag} takes an integer in \\[(\\d+), (\\d+)\\]`).exec(answer.stderr + answer.stdout);
+  assert.ok(range, `no range in: ${answer.stderr}`);
+  return Number(range[2]);
 }
