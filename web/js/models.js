@@ -157,7 +157,7 @@ export function initModels() {
     panel: panel(), image: $('#model-render-image'), downloads: $('#model-render-image-downloads'),
     bar: $('#model-render-progress'), status: $('#model-render-status'), cancel: $('#model-render-cancel'),
     stats: $('#model-render-stats'), warnings: $('#model-render-warnings'),
-  }, { exposure: () => formValues(form).exposure || 0, changed: refreshJobs });
+  }, { picture: () => ({ exposure: formValues(form).exposure || 0 }), changed: refreshJobs });
   uploadForm($('#model-upload-form'), panel(), {
     path: '/assets',
     missing: 'choose a .glb or .gltf file, or a zip or tar archive of a model, first',

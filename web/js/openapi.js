@@ -17,7 +17,7 @@ export function apiDocument() {
 }
 
 // The node a local reference ("#/components/parameters/Exposure") points to, or the node itself.
-function resolve(doc, node) {
+export function resolve(doc, node) {
   if (!node || typeof node.$ref !== 'string') return node;
   return node.$ref.slice(2).split('/').reduce((at, key) => at?.[key], doc);
 }
@@ -66,4 +66,10 @@ export function applyFields(form, fields) {
       if (schema.description) control.title = schema.description;
     }
   }
+}
+
+// The `type` names of the object schemas a oneOf component lists: ['sphere', 'plane', 'mesh', ...].
+export function oneOfTypes(doc, name) {
+  const schema = resolve(doc, doc.components.schemas[name]);
+  return (schema?.oneOf ?? []).flatMap((s) => resolve(doc, resolve(doc, s)?.properties?.type)?.enum ?? []);
 }
