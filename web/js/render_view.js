@@ -49,6 +49,7 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
     if (parts.image.src !== url) return URL.revokeObjectURL(url);
     if (shownBlobUrl) URL.revokeObjectURL(shownBlobUrl);
     shownBlobUrl = url;
+    parts.image.dataset.source = src; // the API's URL of the picture shown
   }
 
   function showImage(job, force = false) {
@@ -122,6 +123,7 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
     stop();
     watched = { id: job.id, shownSpp: -1, pass: 'color' };
     parts.image.removeAttribute('src');
+    delete parts.image.dataset.source;
     withdrawOffer(parts.downloads);
     showJob(job);
     if (!ACTIVE.has(job.status)) {
