@@ -17,9 +17,18 @@ export function apiDocument() {
 }
 
 // The node a local reference ("#/components/parameters/Exposure") points to, or the node itself.
-export function resolve(doc, node) {
+function resolve(doc, node) {
   if (!node || typeof node.$ref !== 'string') return node;
   return node.$ref.slice(2).split('/').reduce((at, key) => at?.[key], doc);
+}
+
+// A schema with its references followed: a $ref, or an allOf of one schema whose own keys (a
+// default, a description) override the referenced schema's.
+export function schemaOf(doc, node) {
+  const schema = resolve(doc, node);
+  if (!schema?.allOf || schema.allOf.length !== 1) return schema;
+  const { allOf, ...own } = schema;
+  return { ...schemaOf(doc, allOf[0]), ...own };
 }
 
 const operation = (doc, path, method) => doc.paths[API + path]?.[method];

@@ -3,7 +3,7 @@
 // catcher), and the passes accumulated beside the colour. A field the document does not name stays
 // hidden and is never sent, so the page asks only what the server accepts.
 import { el } from './dom.js';
-import { apiDocument, componentFields, oneOfTypes, offerChoices, queryParameter, resolve } from './openapi.js';
+import { apiDocument, componentFields, oneOfTypes, offerChoices, queryParameter, schemaOf } from './openapi.js';
 
 const offered = { tone_mapping: false, background: false, ground: false, passes: false, imageToneMapping: false };
 
@@ -34,11 +34,11 @@ function passChoices(names) {
 export async function offerRenderOptions(form) {
   const doc = await apiDocument();
   const fields = componentFields(doc, 'RenderRequest');
-  const tone = resolve(doc, fields.tone_mapping);
+  const tone = schemaOf(doc, fields.tone_mapping);
   show(form, 'tone_mapping', Boolean(tone?.enum));
   if (tone?.enum) offerChoices(form.tone_mapping, tone);
   show(form, 'background', Boolean(fields.background));
-  const passes = resolve(doc, resolve(doc, fields.passes)?.items)?.enum ?? [];
+  const passes = schemaOf(doc, schemaOf(doc, fields.passes)?.items)?.enum ?? [];
   document.querySelector('#render-pass-choices').replaceChildren(...passChoices(passes));
   show(form, 'passes', passes.length > 0);
   show(form, 'ground', oneOfTypes(doc, 'RenderObject').includes('ground'));

@@ -8,7 +8,7 @@ import { state } from './state.js';
 import { checkFields } from './field_errors.js';
 import { offerLinks, withdrawOffer } from './downloads.js';
 import { ACTIVE, showProgress } from './jobs.js';
-import { apiDocument, bodyFields, applyFields, resolve, queryParameter } from './openapi.js';
+import { apiDocument, bodyFields, applyFields, schemaOf, queryParameter } from './openapi.js';
 
 const POLL_MS = 400;
 const form = () => $('#turntable-form');
@@ -97,7 +97,7 @@ export async function initTurntable(modelPath) {
   const doc = await apiDocument();
   if (!doc.paths['/api/v1/turntables']) return;
   const fields = bodyFields(doc, '/turntables');
-  applyFields(form(), resolve(doc, fields.turntable)?.properties ?? {});
+  applyFields(form(), schemaOf(doc, fields.turntable)?.properties ?? {});
   applyFields(form(), { fps: queryParameter(doc, '/turntables/{id}/animation.webp', 'fps') ?? {} });
   $('#turntable-section').hidden = false;
   form().addEventListener('submit', (e) => {
