@@ -197,16 +197,18 @@ test('the BRDF table has its axes: n·v across and roughness down, ticked at the
   await page.locator('#lut-form [name=multiscatter]').selectOption('false');
 });
 
-test('the spp fields show the largest spp the server can be allowed whole', async () => {
-  const largest = flagMaximum('max-render-spp');
-  assert.equal(largest, 16777216);
+test('the spp and size fields show the largest values the server can be allowed whole', async () => {
+  const largest = { spp: flagMaximum('max-render-spp'), width: flagMaximum('max-render-width'), height: flagMaximum('max-render-height') };
+  assert.deepEqual(largest, { spp: 16777216, width: 65536, height: 65536 });
   for (const form of ['#render-form', '#model-render-form']) {
-    const spp = page.locator(`${form} [name=spp]`);
-    const before = await spp.inputValue();
-    await spp.fill(String(largest));
-    const [scroll, client] = await spp.evaluate((i) => [i.scrollWidth, i.clientWidth]);
-    assert.ok(scroll <= client, `${form}: ${largest} needs ${scroll} px in a field ${client} px wide`);
-    await spp.fill(before);
+    for (const [name, value] of Object.entries(largest)) {
+      const field = page.locator(`${form} [name=${name}]`);
+      const before = await field.inputValue();
+      await field.fill(String(value));
+      const [scroll, client] = await field.evaluate((i) => [i.scrollWidth, i.clientWidth]);
+      assert.ok(scroll <= client, `${form} ${name}: ${value} needs ${scroll} px in a field ${client} px wide`);
+      await field.fill(before);
+    }
   }
   assert.deepEqual(browser.errors, []);
 });
