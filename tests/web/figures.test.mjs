@@ -7,25 +7,14 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { shReconstruct } from '../../web/js/sh_basis.js';
-import { mapWidth, mapHeight, useDashboard, waitForImage, elementScreenshot, pixelsOf, flagMaximum } from './support.mjs';
+import { mapWidth, mapHeight, useDashboard, waitForImage, elementScreenshot, pixelsOf, flagMaximum, srgb8,
+  latlongPfm } from './support.mjs';
 
 let server, browser, page;
 useDashboard({ ready: (s) => ({ server, browser, page } = s) });
 
 const shown = (x) => String(Number(x.toPrecision(4))); // the page's num()
 const api = async (path, init) => (await fetch(`${server.base}/api/v1${path}`, init)).json();
-
-// A grey lat-long PFM (rows bottom to top) of radiance f(z) at pixel centres.
-function latlongPfm(width, f) {
-  const height = width / 2;
-  const header = Buffer.from(`PF\n${width} ${height}\n-1.0\n`, 'latin1');
-  const data = Buffer.alloc(width * height * 12);
-  for (let y = 0; y < height; ++y) {
-    const z = Math.cos((Math.PI * (y + 0.5)) / height);
-    for (let x = 0; x < width * 3; ++x) data.writeFloatLE(f(z), 4 * ((height - 1 - y) * width * 3 + x));
-  }
-  return Buffer.concat([header, data]);
-}
 
 async function selectMap(id) {
   await page.locator(`#map-list tr[data-id="${id}"]`).waitFor();
@@ -74,9 +63,6 @@ test('median cut: every light is a disc over the map where it lies, its area pro
   await form.locator('[name=split]').selectOption('median');
 });
 
-// The sRGB encoding of the server's `standard` 8-bit pictures at exposure 0.
-const srgb8 = (x) => Math.round(255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * x ** (1 / 2.4) - 0.055));
-
 test('the signed SH picture is the API\'s coefficients summed on the real basis: the server\'s picture where both show it', async () => {
   await selectMap('forest');
   await page.locator('#sh-form [name=bands]').selectOption('4');
@@ -110,7 +96,7 @@ test('the signed SH picture is the API\'s coefficients summed on the real basis:
 });
 
 test('a hemisphere map\'s two-band SH dips to -1/4 at the nadir: blue in the signed picture, black in the tone-mapped one', async () => {
-  const upload = await fetch(`${server.base}/api/v1/envmaps?name=hemisphere`, { method: 'POST', body: latlongPfm(mapWidth, (z) => (z > 0 ? 1 : 0)) });
+  const upload = await fetch(`${server.base}/api/v1/envmaps?name=hemisphere`, { method: 'POST', body: latlongPfm(mapWidth, ([, , z]) => Array(3).fill(z > 0 ? 1 : 0)) });
   assert.equal(upload.status, 201, await upload.text());
   await page.reload();
   await selectMap('hemisphere');
