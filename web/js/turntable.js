@@ -6,7 +6,7 @@ import { api, apiUrl, loadImage } from './api.js';
 import { $, busy, formValues, showError } from './dom.js';
 import { state } from './state.js';
 import { checkFields } from './field_errors.js';
-import { offerLinks, withdrawOffer } from './downloads.js';
+import { offerFiles, withdrawOffer } from './downloads.js';
 import { ACTIVE, showProgress } from './jobs.js';
 import { apiDocument, bodyFields, applyFields, schemaOf, queryParameter } from './openapi.js';
 
@@ -38,9 +38,12 @@ async function showAnimation(job, current) {
   await loadImage($('#turntable-player'), webp, current);
   if (!current()) return;
   $('#turntable-player').dataset.animation = job.id;
-  offerLinks($('#turntable-downloads'), `turntable-${job.id}`, {
-    webp, zip: apiUrl(path(job.id, '/frames.zip')), png: apiUrl(path(job.id, '/contact-sheet'), { format: 'png' }),
-  });
+  const name = `turntable-${job.id}`;
+  offerFiles($('#turntable-downloads'), [
+    { name: `${name}.webp`, url: webp },
+    { name: `${name}-frames.zip`, url: apiUrl(path(job.id, '/frames.zip')) },
+    { name: `${name}-contact-sheet.png`, url: apiUrl(path(job.id, '/contact-sheet'), { format: 'png' }) },
+  ]);
 }
 
 function follow(id) {
