@@ -295,7 +295,7 @@ Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed",
-                               "mipmaps", "normal_maps", "sampling"});
+                               "mipmaps", "normal_maps", "sampling", kRenderToneMapping.name});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");
@@ -312,6 +312,7 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   r.settings.mipmaps = json_bool(body, "mipmaps", d.mipmaps);
   r.settings.normal_maps = json_bool(body, "normal_maps", d.normal_maps);
   r.settings.sampling = json_enum(body, "sampling", d.sampling, "");
+  r.tone_mapping = json_enum(body, kRenderToneMapping.name, kRenderToneMapping.fallback);
   as_invalid_field([&] {
     r.scene.validate("scene");
     r.lighting.validate("lighting");

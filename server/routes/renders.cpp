@@ -9,8 +9,10 @@
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
 #include "api/render_request.hpp"
+#include "api/thumbnail_params.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/image/resize.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/renders/event_streams.hpp"
 #include "server/renders/queue_render.hpp"
@@ -79,13 +81,16 @@ void list(const App& app, httplib::Response& res) {
 
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
-  const auto params = api::parse_preview_params(req.params);
+  const auto params = api::parse_preview_params(req.params, ImageFormat::Png, job->request().tone_mapping);
   const RenderImage current = job->image();
   if (!current.image)
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
-  const Image& pixels = *current.image;
+  const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
+  const std::optional<Image> resized =
+      size ? std::optional(fit_longest_side(*current.image, size)) : std::nullopt;
+  const Image& pixels = resized ? *resized : *current.image;
   auto memory =
       app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
                          std::string("encoding a render as ") + enum_name(params.format));
