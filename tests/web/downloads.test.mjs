@@ -44,8 +44,8 @@ async function saveExr(bar, name) {
 
 const BARS = ['map-list', 'map-image', 'samples-image', 'distribution', 'median-cut-image', 'median-cut-lights', 'fresnel',
   'render-image', 'render-jobs', 'sh-image', 'sh-coefficients', 'lut-image', 'prefilter', 'model-list'];
-// Shown once a model is rendered (models.test.mjs).
-const MODEL_RENDER_BAR = 'model-render-image';
+// Shown once a model is rendered (models.test.mjs), and once its turntable is done (turntable.test.mjs).
+const MODEL_BARS = ['model-render-image', 'turntable'];
 
 const prefiltered = async (fields) => getJson(`/prefilters/${await prefilterChain(page, fields)}`);
 
@@ -57,7 +57,7 @@ test('the page offers every image and table for download once it shows them', as
   for (const bar of BARS) await page.locator(`#${bar}-downloads`).waitFor();
   const all = await page.$$eval('.downloads', (bars) => bars.map((b) => b.id.replace(/-downloads$/, '')));
   // (the side-by-side renders' links: dashboard.test.mjs)
-  assert.deepEqual(all.sort(), [...BARS, MODEL_RENDER_BAR].sort());
+  assert.deepEqual(all.sort(), [...BARS, ...MODEL_BARS].sort());
 });
 
 test('the maps list as JSON and CSV, the map as PNG and EXR', async () => {

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { load } from '../../web/vendor/js-yaml.min.js';
 import { mapWidth, mapHeight, useDashboard, waitForImage, screenshot, elementScreenshot,
-  prefilterChain } from './support.mjs';
+  prefilterChain, latlongPfm } from './support.mjs';
 
 let server, browser, page;
 useDashboard({ ready: (s) => ({ server, browser, page } = s) });
@@ -17,23 +17,6 @@ const shown = (x) => String(Number(x.toPrecision(4))); // the page's num()
 
 async function apiDocument() {
   return load(await (await fetch(`${server.base}/api/v1/openapi.yaml`)).text());
-}
-
-// A lat-long PFM (rows bottom to top) of width x width / 2 with radiance f(direction) at pixel centres.
-function latlongPfm(width, f) {
-  const height = width / 2;
-  const header = Buffer.from(`PF\n${width} ${height}\n-1.0\n`, 'latin1');
-  const data = Buffer.alloc(width * height * 12);
-  for (let y = 0; y < height; ++y) {
-    const theta = (Math.PI * (y + 0.5)) / height;
-    const row = height - 1 - y;
-    for (let x = 0; x < width; ++x) {
-      const phi = (2 * Math.PI * (x + 0.5)) / width;
-      const d = [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
-      f(d).forEach((v, c) => data.writeFloatLE(v, 12 * (row * width + x) + 4 * c));
-    }
-  }
-  return Buffer.concat([header, data]);
 }
 
 // A smooth sky (blue, brightening to the horizon, over a dim ground): no compact emitter.

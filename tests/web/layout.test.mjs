@@ -83,9 +83,9 @@ test('nothing lies beyond the viewport at 1280 and at 390 pixels wide, the rende
     assert.equal(scroll[0], scroll[1], `${screen.name}: the page is ${scroll[0]} px wide in a ${scroll[1]} px viewport`);
     assert.deepEqual(await outside(), [], screen.name);
     // The renders are shown whole: within their frames, scaled down to fit if need be.
-    for (const panel of ['#renders-panel', '#models-panel']) {
-      const [frame, image] = await Promise.all(['.render-frame', '.render-frame img'].map((s) => page.locator(`${panel} ${s}`).boundingBox()));
-      assert.ok(image.width > 0 && image.x >= frame.x && image.x + image.width <= frame.x + frame.width, `${screen.name} ${panel}: ${JSON.stringify({ frame, image })}`);
+    for (const id of ['#render-image', '#model-render-image']) {
+      const [frame, image] = await Promise.all([page.locator(id).locator('xpath=..'), page.locator(id)].map((l) => l.boundingBox()));
+      assert.ok(image.width > 0 && image.x >= frame.x && image.x + image.width <= frame.x + frame.width, `${screen.name} ${id}: ${JSON.stringify({ frame, image })}`);
     }
     assert.ok(await page.locator('#health').isVisible());
   }

@@ -2,12 +2,13 @@
 // holding a real map, Debian's Chromium through playwright-core, and waits on the page.
 import { before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, rmSync, existsSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { load } from '../../web/vendor/js-yaml.min.js';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 export const envmaps = path.resolve(here, '../data/envmaps');
@@ -217,4 +218,61 @@ export function csvRows(bytes) {
   assert.ok(text.endsWith('\r\n') && !/[^\r]\n/.test(text), 'CSV lines end in CRLF');
   assert.ok(!text.includes('"'), 'no quoted values expected');
   return text.slice(0, -2).split('\r\n').map((line) => line.split(','));
+}
+
+// The RGBA bytes of what an <img> (at its natural size) or a <canvas> shows: {width, height, data}.
+export const pixelsOf = (page, selector) => page.$eval(selector, (source) => {
+  const canvas = document.createElement('canvas');
+  [canvas.width, canvas.height] = source instanceof HTMLImageElement ? [source.naturalWidth, source.naturalHeight] : [source.width, source.height];
+  const context = canvas.getContext('2d');
+  context.drawImage(source, 0, 0);
+  return { width: canvas.width, height: canvas.height, data: [...context.getImageData(0, 0, canvas.width, canvas.height).data] };
+});
+
+// The largest value the server accepts for one of its integer flags (--NAME), as its refusal of a
+// value past the flag's range states it.
+export function flagMaximum(flag) {
+  const answer = spawnSync(serverBin, [`--${flag}`, '0'], { encoding: 'utf8', timeout: 10000 });
+  const range = new RegExp(`--${flag} takes an integer in \\[(\\d+), (\\d+)\\]`).exec(answer.stderr + answer.stdout);
+  assert.ok(range, `no range in: ${answer.stderr}`);
+  return Number(range[2]);
+}
+
+// The sRGB encoding of a linear value in 8 bits, as the server's `standard` pictures at exposure 0.
+export const srgb8 = (x) => Math.round(255 * (x <= 0.0031308 ? 12.92 * x : 1.055 * Math.min(1, x) ** (1 / 2.4) - 0.055));
+
+// The API's document, parsed.
+export async function apiDocument(server) {
+  return load(await (await fetch(`${server.base}/api/v1/openapi.yaml`)).text());
+}
+
+// A render of the sphere through the render panel shown in the page: its id and the request's body.
+export async function renderShown(page, options) {
+  const posted = page.waitForRequest(isRenderPost);
+  const id = await renderSphere(page, options);
+  await waitForImage(page, '#render-image', options.width ?? 32);
+  return { id, body: (await posted).postDataJSON() };
+}
+
+// The pixels of the render image once the API URL it shows matches `pattern` (a newer picture).
+export async function renderPixels(page, pattern) {
+  await page.waitForFunction((p) => new RegExp(p).test(document.querySelector('#render-image').dataset.source ?? ''), pattern);
+  return pixelsOf(page, '#render-image');
+}
+
+// A lat-long PFM (rows bottom to top) of width x width / 2 with radiance f(direction) at pixel centres.
+export function latlongPfm(width, f) {
+  const height = width / 2;
+  const header = Buffer.from(`PF\n${width} ${height}\n-1.0\n`, 'latin1');
+  const data = Buffer.alloc(width * height * 12);
+  for (let y = 0; y < height; ++y) {
+    const theta = (Math.PI * (y + 0.5)) / height;
+    const row = height - 1 - y;
+    for (let x = 0; x < width; ++x) {
+      const phi = (2 * Math.PI * (x + 0.5)) / width;
+      const d = [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
+      f(d).forEach((v, c) => data.writeFloatLE(v, 12 * (row * width + x) + 4 * c));
+    }
+  }
+  return Buffer.concat([header, data]);
 }

@@ -25,7 +25,7 @@ function initMapSelect() {
     const m = currentMap();
     $('#map-summary').textContent = m ? `${m.width}×${m.height} ${m.format}` : 'no map loaded';
     if (id) return;
-    ['#map-image', '#samples-image', '#median-cut-image', '#sh-image'].forEach((s) => $(s).removeAttribute('src'));
+    ['#map-image', '#samples-image', '#median-cut-image', '#sh-image', '#sh-map-image'].forEach((s) => $(s).removeAttribute('src'));
     ['#map-image', '#samples-image', '#distribution', '#median-cut-image', '#median-cut-lights', '#sh-image',
       '#sh-coefficients']
       .forEach((s) => withdrawOffer($(`${s}-downloads`)));

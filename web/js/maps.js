@@ -62,9 +62,10 @@ const showPreview = latestOnly(async (current) => {
   const exposure = $('#map-exposure').valueAsNumber;
   $('#map-exposure-value').textContent = exposure > 0 ? `+${exposure}` : String(exposure);
   const projection = $('#map-projection').value || 'latlong';
+  const tone = $('#map-tone-mapping-field').hidden ? {} : { tone_mapping: $('#map-tone-mapping').value };
   const id = state.map;
   const path = `/envmaps/${encodeURIComponent(id)}/image`;
-  const png = apiUrl(path, { format: 'png', exposure, projection });
+  const png = apiUrl(path, { format: 'png', exposure, projection, ...tone });
   await busy(panel(), async () => {
     await loadImage($('#map-image'), png, current);
     if (!current()) return;
@@ -74,11 +75,15 @@ const showPreview = latestOnly(async (current) => {
   });
 });
 
-// The projections the image endpoint offers, named as its document names them.
+// The projections (and tone curves, when it takes one) the image endpoint offers, named as its
+// document names them.
 async function offerProjections() {
   await busy(panel(), async () => {
     const doc = await apiDocument();
     offerChoices($('#map-projection'), queryParameter(doc, '/envmaps/{id}/image', 'projection'));
+    const tone = queryParameter(doc, '/envmaps/{id}/image', 'tone_mapping');
+    if (tone?.enum) offerChoices($('#map-tone-mapping'), tone);
+    $('#map-tone-mapping-field').hidden = !tone?.enum;
   });
 }
 
@@ -87,6 +92,7 @@ export function initMaps() {
   on('map', () => { renderList(state.maps); renderMeta(); showPreview(); });
   $('#map-exposure').addEventListener('input', debounce(() => showPreview(), 120));
   $('#map-projection').addEventListener('change', () => showPreview());
+  $('#map-tone-mapping').addEventListener('change', () => showPreview());
   offerProjections();
   uploadForm($('#upload-form'), panel(), {
     path: '/envmaps',

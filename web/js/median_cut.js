@@ -1,11 +1,12 @@
-// The Median-cut panel: Debevec's regions and lights for the selected map, with the lights' energies.
+// The Median-cut panel: Debevec's regions and lights for the selected map, each light drawn over the
+// picture with its energy, and the brightest lights' figures.
 import { api, apiUrl, loadImage } from './api.js';
 import { $, el, num, rgb, busy, formValues, latestOnly, autoUpdate, fillTable } from './dom.js';
-import { state, on } from './state.js';
+import { state, on, currentMap } from './state.js';
 import { offerLinks, offerTable } from './downloads.js';
+import { drawLights, clearLights, anglesDeg } from './light_markers.js';
 
 const panel = () => $('#median-cut-panel');
-const deg = (rad) => (rad * 180) / Math.PI;
 
 function showStats(result) {
   const spread = result.energy_min > 0 ? result.energy_max / result.energy_min : Infinity;
@@ -18,12 +19,12 @@ function showStats(result) {
   $('#median-cut-stats').replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
   const brightest = [...result.lights].sort((a, b) => b.energy - a.energy).slice(0, 5);
   fillTable($('#median-cut-lights'), brightest.map((l, i) => {
-    const [x, y, z] = l.direction;
+    const { theta, phi } = anglesDeg(l.direction);
     const r = l.region;
     return el('tr', {},
       el('td', {}, `#${i + 1}  (${l.pixel[0]}, ${l.pixel[1]})`),
-      el('td', { class: 'num' }, num(deg(Math.acos(Math.max(-1, Math.min(1, z)))), 3)),
-      el('td', { class: 'num' }, num((deg(Math.atan2(y, x)) + 360) % 360, 3)),
+      el('td', { class: 'num' }, num(theta, 3)),
+      el('td', { class: 'num' }, num(phi, 3)),
       el('td', { class: 'num' }, rgb(l.power)),
       el('td', { class: 'num' }, `${r.x1 - r.x0}×${r.y1 - r.y0}`));
   }));
@@ -37,6 +38,8 @@ const update = latestOnly(async (current) => {
     const result = await api(`/envmaps/${id}/median-cut`, { method: 'POST', json: { count, placement, split, luminance } });
     if (!current()) return;
     showStats(result);
+    const map = currentMap();
+    drawLights($('#median-cut-overlay'), $('#median-cut-legend'), result, map.width, map.height);
     const name = `${state.map}-median-cut-${count}`;
     offerTable($('#median-cut-lights-downloads'), `${name}-lights`, result.lights);
     const png = apiUrl(`/envmaps/${id}/median-cut.png`, { count, placement, split, luminance, style, exposure });
@@ -46,6 +49,9 @@ const update = latestOnly(async (current) => {
 });
 
 export function initMedianCut() {
-  on('map', () => update());
+  on('map', () => {
+    clearLights($('#median-cut-overlay'), $('#median-cut-legend'));
+    update();
+  });
   autoUpdate($('#median-cut-form'), () => update());
 }

@@ -1,7 +1,7 @@
 // The Models panel: upload a model (a .glb, a self-contained .gltf, or an archive of a model with its
 // files), the uploaded models with delete, the selected one's description as the server read it
 // (frame, bounds, counts, materials, textures, cameras, extensions) with its warnings, and a render of
-// it framed (or through one of its glTF cameras) under the current map.
+// it framed (or through one of its glTF cameras) under the current map, and a turntable of it.
 import { api } from './api.js';
 import { $, el, num, bigNum, busy, formValues, showError, fillTable, confirmClick } from './dom.js';
 import { state } from './state.js';
@@ -11,6 +11,7 @@ import { uploadForm } from './upload.js';
 import { apiDocument, componentFields, applyFields } from './openapi.js';
 import { renderView, showWarnings } from './render_view.js';
 import { refreshAssets, refreshJobs } from './renders.js';
+import { initTurntable, turntableModel } from './turntable.js';
 
 const panel = () => $('#models-panel');
 const renderForm = () => $('#model-render-form');
@@ -120,6 +121,7 @@ function showModel() {
   showTextures(m ?? {});
   offerCameras(m);
   $('#model-render-submit').disabled = !m;
+  turntableModel(m);
 }
 
 // The scene's camera: a glTF camera by index, or the fit at the form's angles.
@@ -157,7 +159,7 @@ export function initModels() {
     panel: panel(), image: $('#model-render-image'), downloads: $('#model-render-image-downloads'),
     bar: $('#model-render-progress'), status: $('#model-render-status'), cancel: $('#model-render-cancel'),
     stats: $('#model-render-stats'), warnings: $('#model-render-warnings'),
-  }, { exposure: () => formValues(form).exposure || 0, changed: refreshJobs });
+  }, { picture: () => ({ exposure: formValues(form).exposure || 0 }), changed: refreshJobs });
   uploadForm($('#model-upload-form'), panel(), {
     path: '/assets',
     missing: 'choose a .glb or .gltf file, or a zip or tar archive of a model, first',
@@ -170,5 +172,6 @@ export function initModels() {
   form.camera.addEventListener('change', followCamera);
   form.exposure.addEventListener('change', () => view.refresh());
   offerAngles();
+  busy(panel(), () => initTurntable(() => current()?.path ?? null));
   refreshModels();
 }

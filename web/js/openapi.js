@@ -22,6 +22,15 @@ function resolve(doc, node) {
   return node.$ref.slice(2).split('/').reduce((at, key) => at?.[key], doc);
 }
 
+// A schema with its references followed: a $ref, or an allOf of one schema whose own keys (a
+// default, a description) override the referenced schema's.
+export function schemaOf(doc, node) {
+  const schema = resolve(doc, node);
+  if (!schema?.allOf || schema.allOf.length !== 1) return schema;
+  const { allOf, ...own } = schema;
+  return { ...schemaOf(doc, allOf[0]), ...own };
+}
+
 const operation = (doc, path, method) => doc.paths[API + path]?.[method];
 
 // The schemas of the fields of an operation's JSON body: {levels: {type, minimum, ...}, ...}.
@@ -66,4 +75,10 @@ export function applyFields(form, fields) {
       if (schema.description) control.title = schema.description;
     }
   }
+}
+
+// The `type` names of the object schemas a oneOf component lists: ['sphere', 'plane', 'mesh', ...].
+export function oneOfTypes(doc, name) {
+  const schema = resolve(doc, doc.components.schemas[name]);
+  return (schema?.oneOf ?? []).flatMap((s) => resolve(doc, resolve(doc, s)?.properties?.type)?.enum ?? []);
 }

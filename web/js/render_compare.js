@@ -14,13 +14,17 @@ const OPTIONS = {
 
 let comparison = 0; // the latest comparison; an older one stops updating the page
 
-// A render's image as the page shows it (PNG at the exposure) and in linear values (EXR).
-export const renderImageUrls = (id, exposure) => ({
-  png: apiUrl(`/renders/${id}/image`, { format: 'png', exposure }),
-  exr: apiUrl(`/renders/${id}/image`, { format: 'exr' }),
-});
+// A render's image (or one of its passes) as the page shows it (PNG at the exposure, with the tone
+// mapper chosen if any) and in linear values (EXR).
+export function renderImageUrls(id, { exposure = 0, tone_mapping: tone, pass = 'color' } = {}) {
+  const which = pass === 'color' ? {} : { pass };
+  return {
+    png: apiUrl(`/renders/${id}/image`, { format: 'png', exposure, ...(tone ? { tone_mapping: tone } : {}), ...which }),
+    exr: apiUrl(`/renders/${id}/image`, { format: 'exr', ...which }),
+  };
+}
 
-async function follow(job, figure, label, current, exposure) {
+async function follow(job, figure, label, current, picture) {
   const caption = $('figcaption', figure);
   for (;;) {
     if (!current()) return;
@@ -31,7 +35,7 @@ async function follow(job, figure, label, current, exposure) {
     job = await api(`/renders/${job.id}`);
   }
   if (job.image_available) {
-    const urls = renderImageUrls(job.id, exposure);
+    const urls = renderImageUrls(job.id, picture);
     await loadImage($('img', figure), urls.png, current);
     if (current()) offerLinks($('.downloads', figure), `render-${job.id}`, urls);
   }
@@ -39,8 +43,9 @@ async function follow(job, figure, label, current, exposure) {
 }
 
 // Submits `body` with `option` each of its two ways and, once both are accepted, shows both renders in
-// `box`. Resolves once both have ended; rejects with the API's error.
-export async function compareRenders(box, body, option, exposure) {
+// `box`, at `picture` ({exposure, tone_mapping}). Resolves once both have ended; rejects with the
+// API's error.
+export async function compareRenders(box, body, option, picture) {
   const mine = ++comparison;
   const current = () => mine === comparison;
   const sides = OPTIONS[option].sides.map(([value, name]) => {
@@ -54,6 +59,6 @@ export async function compareRenders(box, body, option, exposure) {
   if (!current()) return jobs;
   box.replaceChildren(...sides.map((s) => s.figure));
   box.hidden = false;
-  await Promise.all(sides.map((s, i) => follow(jobs[i], s.figure, s.label, current, exposure)));
+  await Promise.all(sides.map((s, i) => follow(jobs[i], s.figure, s.label, current, picture)));
   return jobs;
 }

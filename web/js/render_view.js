@@ -1,6 +1,7 @@
 // One render job followed on the page: through its server-sent events (polling when the stream is
 // refused or drops), its progress bar, status and figures, the camera it resolved and its warnings,
-// the image refreshed after every pass, and Cancel. The Renders and Models panels each have one.
+// the image refreshed after every pass, the passes it accumulates beside the colour (one shown at a
+// time), and Cancel. The Renders and Models panels each have one.
 import { api, errorOf, loadImage, API } from './api.js';
 import { el, num, bigNum, busy, showError } from './dom.js';
 import { renderImageUrls } from './render_compare.js';
@@ -29,11 +30,12 @@ export function showWarnings(box, warnings = []) {
   box.hidden = !warnings.length;
 }
 
-// `parts`: the elements it fills ({panel, image, downloads, bar, status, cancel, stats, warnings}),
-// `exposure()` the exposure of the image shown, `changed()` called as the job advances (at most once a
-// second) and when it ends.
-export function renderView(parts, { exposure, changed = () => {} }) {
-  let watched = null; // {id, source, poll, shownSpp, ended}
+// `parts`: the elements it fills ({panel, image, downloads, bar, status, cancel, stats, warnings, and
+// optionally passes: the pass tabs}), `picture()` how the image is shown ({exposure, tone_mapping}),
+// `passesOf(job)` the passes a job accumulates beside the colour, `changed()` called as the job
+// advances (at most once a second) and when it ends.
+export function renderView(parts, { picture, passesOf = () => [], changed = () => {} }) {
+  let watched = null; // {id, source, poll, shownSpp, ended, pass}
   let shownBlobUrl = null;
   const fail = (e) => showError(parts.panel, e);
 
@@ -47,6 +49,7 @@ export function renderView(parts, { exposure, changed = () => {} }) {
     if (parts.image.src !== url) return URL.revokeObjectURL(url);
     if (shownBlobUrl) URL.revokeObjectURL(shownBlobUrl);
     shownBlobUrl = url;
+    parts.image.dataset.source = src; // the API's URL of the picture shown
   }
 
   function showImage(job, force = false) {
@@ -55,10 +58,29 @@ export function renderView(parts, { exposure, changed = () => {} }) {
     watched.shownSpp = job.spp_done;
     const { id } = job;
     const current = () => watched && watched.id === id;
-    const urls = renderImageUrls(id, exposure());
+    const urls = renderImageUrls(id, { ...picture(), pass: watched.pass });
     showFreshImage(urls.png, current)
       .then(() => { if (current()) offerLinks(parts.downloads, `render-${id}`, urls); })
       .catch(fail);
+  }
+
+  // A tab per pass of the job (the colour first), the one shown pressed; hidden without passes.
+  function showPassTabs(job) {
+    if (!parts.passes) return;
+    const passes = passesOf(job);
+    const ready = job.image_available && !ACTIVE.has(job.status);
+    parts.passes.hidden = !passes.length || !ready;
+    if (parts.passes.hidden) return parts.passes.replaceChildren();
+    parts.passes.replaceChildren(el('span', { class: 'muted' }, 'pass'), ...['color', ...passes].map((name) =>
+      el('button', { type: 'button', class: 'small', 'aria-pressed': String(name === watched.pass), dataset: { pass: name },
+        onclick: () => showPass(job, name) }, name)));
+  }
+
+  function showPass(job, name) {
+    if (!watched || watched.id !== job.id) return;
+    watched.pass = name;
+    showPassTabs(job);
+    showImage(job, true);
   }
 
   function showJob(job) {
@@ -68,6 +90,7 @@ export function renderView(parts, { exposure, changed = () => {} }) {
     showProgress(job, parts);
     parts.stats.replaceChildren(...figures(job).flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
     showWarnings(parts.warnings, job.warnings);
+    showPassTabs(job);
     showImage(job);
   }
 
@@ -98,8 +121,9 @@ export function renderView(parts, { exposure, changed = () => {} }) {
 
   function watch(job) {
     stop();
-    watched = { id: job.id, shownSpp: -1 };
+    watched = { id: job.id, shownSpp: -1, pass: 'color' };
     parts.image.removeAttribute('src');
+    delete parts.image.dataset.source;
     withdrawOffer(parts.downloads);
     showJob(job);
     if (!ACTIVE.has(job.status)) {
@@ -132,7 +156,7 @@ export function renderView(parts, { exposure, changed = () => {} }) {
     if (job) showJob(job);
   }
 
-  // The image again at the current exposure.
+  // The image again at the current exposure and tone mapper.
   function refresh() {
     if (watched) api(`/renders/${watched.id}`).then((job) => showImage(job, true)).catch(fail);
   }
@@ -149,6 +173,10 @@ export function renderView(parts, { exposure, changed = () => {} }) {
     parts.cancel.disabled = true;
     parts.stats.replaceChildren();
     showWarnings(parts.warnings);
+    if (parts.passes) {
+      parts.passes.hidden = true;
+      parts.passes.replaceChildren();
+    }
   }
 
   parts.cancel.addEventListener('click', cancel);

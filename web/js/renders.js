@@ -1,6 +1,7 @@
 // The Renders panel: submit a preset scene or an uploaded model (optionally two renders side by side,
-// an option on and off), follow the job through its server-sent events (progress
-// bar, image refreshed after every pass), cancel it, and list every job.
+// an option on and off) with the picture options the server offers (tone mapper, background, ground,
+// passes), follow the job through its server-sent events (progress bar, image refreshed after every
+// pass, then each pass), cancel it, and list every job.
 import { api } from './api.js';
 import { $, el, num, busy, formValues, showError, fillTable } from './dom.js';
 import { state } from './state.js';
@@ -9,20 +10,30 @@ import { offerTable } from './downloads.js';
 import { checkFields } from './field_errors.js';
 import { ACTIVE } from './jobs.js';
 import { renderView } from './render_view.js';
+import { offerRenderOptions, followRenderOptions, renderOptionFields, groundObject, shownToneMapping } from './render_options.js';
 
 const panel = () => $('#renders-panel');
 
 let view = null; // the job followed (renderView)
+const requestedPasses = new Map(); // job id -> the passes its request named
 
-function exposure() {
-  return formValues($('#render-form')).exposure || 0;
+// How the render's image is shown: the exposure, and the tone mapper chosen (overriding the request's).
+function picture() {
+  const form = $('#render-form');
+  return { exposure: formValues(form).exposure || 0, tone_mapping: shownToneMapping(form) };
 }
 
-// The scene a choice of the scene menu names: a preset, or "asset:NAME" for an uploaded model.
-function sceneOf(choice) {
-  if (!choice.startsWith('asset:')) return { preset: choice };
-  return { objects: [{ type: 'mesh', path: `assets/${choice.slice('asset:'.length)}` }] };
+const isAsset = (choice) => choice.startsWith('asset:');
+
+// The scene a choice of the scene menu names: a preset, or "asset:NAME" for an uploaded model (with
+// the ground the form asks for).
+function sceneOf(choice, form) {
+  if (!isAsset(choice)) return { preset: choice };
+  const ground = groundObject(form);
+  return { objects: [{ type: 'mesh', path: `assets/${choice.slice('asset:'.length)}` }, ...(ground ? [ground] : [])] };
 }
+
+const follow = (form) => followRenderOptions(form, isAsset(form.preset.value));
 
 // Lists the uploaded assets in the scene menu, keeping the choice when it is still there.
 export async function refreshAssets() {
@@ -32,6 +43,7 @@ export async function refreshAssets() {
   const chosen = select.value;
   $('#render-assets').replaceChildren(...list.assets.map((a) => el('option', { value: `asset:${a.name}` }, a.name)));
   select.value = [...select.options].some((o) => o.value === chosen) ? chosen : select.options[0].value;
+  follow($('#render-form'));
 }
 
 async function submit(event) {
@@ -44,16 +56,18 @@ async function submit(event) {
   const v = formValues($('#render-form'));
   const lighting = { mode: v.mode, rotation_deg: v.rotation_deg, intensity: v.intensity, visible: v.visible };
   if (v.mode.startsWith('median_cut')) lighting.lights = v.lights;
-  const body = { envmap: state.map, scene: sceneOf(v.preset), lighting, width: v.width, height: v.height, spp: v.spp,
-    sampling: v.sampling, max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps };
+  const form = $('#render-form');
+  const body = { envmap: state.map, scene: sceneOf(v.preset, form), lighting, width: v.width, height: v.height, spp: v.spp,
+    sampling: v.sampling, max_depth: v.max_depth, mipmaps: v.mipmaps, normal_maps: v.normal_maps, ...renderOptionFields(form) };
   if (v.compare) {
-    await busy(panel(), () => compareRenders($('#render-compare'), body, v.compare, exposure()));
+    await busy(panel(), () => compareRenders($('#render-compare'), body, v.compare, picture()));
     refreshJobs();
     return;
   }
   $('#render-compare').hidden = true;
   const job = await busy(panel(), () => api('/renders', { method: 'POST', json: body }));
   if (!job) return;
+  requestedPasses.set(job.id, body.passes ?? []);
   view.watch(job);
   refreshJobs();
 }
@@ -89,9 +103,16 @@ export function initRenders() {
   view = renderView({
     panel: panel(), image: $('#render-image'), downloads: $('#render-image-downloads'), bar: $('#render-progress'),
     status: $('#render-status'), cancel: $('#render-cancel'), stats: $('#render-stats'), warnings: $('#render-warnings'),
-  }, { exposure, changed: refreshJobs });
+    passes: $('#render-passes'),
+  }, { picture, passesOf: (job) => (Array.isArray(job.passes) ? job.passes.filter((p) => p !== 'color') : requestedPasses.get(job.id) ?? []), changed: refreshJobs });
   form.addEventListener('submit', submit);
   form.exposure.addEventListener('change', () => view.refresh());
+  form.tone_mapping.addEventListener('change', () => view.refresh());
+  form.addEventListener('change', () => follow(form));
+  busy(panel(), async () => {
+    await offerRenderOptions(form);
+    follow(form);
+  });
   form.mode.addEventListener('change', () => { form.lights.disabled = !form.mode.value.startsWith('median_cut'); });
   form.lights.disabled = true;
   form.preset.addEventListener('focus', refreshAssets);
