@@ -65,7 +65,7 @@ json sphere_body(json extra) {
                     {"radius", 1},
                     {"material", {{"type", "diffuse"}, {"albedo", 1}}}}}},
                  {"camera", {{"position", {0, -4, 0}}, {"look_at", {0, 0, 0}}, {"fov_deg", 40}}}}}};
-  body.update(extra);
+  if (extra.is_object()) body.update(extra);
   return body;
 }
 
