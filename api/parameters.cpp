@@ -7,6 +7,8 @@
 #include "api/prefilter_request.hpp"
 #include "api/sample_request.hpp"
 #include "api/sh_request.hpp"
+#include "api/thumbnail_params.hpp"
+#include "api/turntable_request.hpp"
 #include "engine/envmap/invalid_pixels.hpp"
 #include "engine/envmap/sample_set.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
@@ -117,6 +119,12 @@ void add_request_ranges(std::vector<Doc>& d) {
   d.push_back(range_doc(query(sh + ".png", "get", "width"), kShImageWidth));
   d.push_back(field_doc({"components", "parameters", "Exposure", "schema"}, kExposure));
   d.push_back(field_doc({"components", "parameters", "Gamma", "schema"}, kGamma));
+  d.push_back(
+      enum_doc({"components", "parameters", "ToneMapping", "schema"}, std::optional(kToneMapping.fallback)));
+  d.push_back(
+      enum_doc({"components", "parameters", "RenderToneMapping", "schema"}, std::optional<ToneCurve>()));
+  d.push_back(enum_doc(schema("RenderRequest", {"properties", kRenderToneMapping.name}),
+                       std::optional(kRenderToneMapping.fallback)));
   const std::string fresnel = "/api/v1/fresnel";
   d.push_back(range_doc(query(fresnel, "get", "eta_i"), limits::kFresnelIndex, 1.0));
   d.push_back(range_doc(query(fresnel, "get", "eta_t"), limits::kFresnelIndex));
@@ -216,6 +224,23 @@ void add_projection_parameters(std::vector<Doc>& d) {
   d.push_back(enum_doc(schema("EnvMap", {"properties", "source_projection"}), std::optional<Projection>()));
 }
 
+void add_turntable_parameters(std::vector<Doc>& d) {
+  const render::Turntable t;
+  const auto field = [](const std::string& name) { return schema("Turntable", {"properties", name}); };
+  d.push_back(range_doc(field("frames"), limits::kTurntableFrames, t.frames));
+  d.push_back(range_doc(field("azimuth_start_deg"), kTurntableAzimuthDeg, t.azimuth_start_deg));
+  d.push_back(range_doc(field("azimuth_step_deg"), kTurntableAzimuthDeg));
+  d.push_back(range_doc(field("elevation_deg"), limits::kElevationDeg, t.elevation_deg));
+  d.push_back(range_doc(field("elevation_sweep_deg"), kTurntableSweepDeg, t.elevation_sweep_deg));
+  d.push_back(range_doc(field("margin"), limits::kFitMargin, t.margin));
+  d.push_back(field_doc({"components", "parameters", "ImageSize", "schema"}, kImageSize));
+  const std::string root = "/api/v1/turntables/{id}";
+  d.push_back(field_doc(query(root + "/animation.webp", "get", "fps"), kAnimationFps));
+  d.push_back({query(root + "/contact-sheet", "get", "format"), eight_bit_format_names(), {}, {}, "png"});
+  for (const char* picture : {"/frames/{index}", "/frames.zip", "/contact-sheet", "/animation.webp"})
+    d.push_back(enum_doc(query(root + picture, "get", "tone_mapping"), std::optional(kTurntableToneCurve)));
+}
+
 }  // namespace
 
 std::vector<DocumentedParameter> documented_parameters() {
@@ -226,6 +251,7 @@ std::vector<DocumentedParameter> documented_parameters() {
   add_prefilter_parameters(d);
   add_sun_parameters(d);
   add_projection_parameters(d);
+  add_turntable_parameters(d);
   return d;
 }
 

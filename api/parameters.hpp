@@ -10,6 +10,7 @@
 
 #include "api/error_codes.hpp"
 #include "engine/core/limits.hpp"
+#include "engine/image/image_io.hpp"
 
 namespace lp::api {
 
@@ -102,6 +103,17 @@ inline constexpr NumberField kLightCount{"count", 64, {1, double(kMaxLights.rang
 inline constexpr NumberField kExposure{"exposure", 0, {-64, 64}};
 inline constexpr NumberField kGamma{"gamma", std::nullopt, {0, 10}};  // 0 itself excluded: > 0
 inline constexpr NumberField kFresnelStep{"step", 1, limits::kFresnelStepDeg};
+
+// An enumerated field of a request body or query, and its default (the names are the enum's table).
+template <class E>
+struct EnumField {
+  const char* name;
+  E fallback;
+};
+// The tone curve of 8-bit pictures: `standard` unless the picture is a render's, whose default is its
+// request's `tone_mapping`, itself `neutral` when absent.
+inline constexpr EnumField<ToneCurve> kToneMapping{"tone_mapping", ToneCurve::Standard};
+inline constexpr EnumField<ToneCurve> kRenderToneMapping{"tone_mapping", ToneCurve::Neutral};
 
 // Where api/openapi.yaml states a parameter, and what it must state: `location` is a path of keys from
 // the document's root; in a list, "name=X" picks the parameter named X and "type=X" the schema whose

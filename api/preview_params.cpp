@@ -5,8 +5,9 @@
 
 namespace lp::api {
 
-ToneMap parse_tone_map(const Query& q) {
+ToneMap parse_tone_map(const Query& q, ToneCurve curve) {
   ToneMap tone;
+  tone.curve = query_enum(q, kToneMapping.name, curve);
   const NumberField &e = kExposure, &g = kGamma;
   tone.exposure = float(query_double(q, e.name, *e.fallback, e.range.min, e.range.max));
   if (auto gamma = query_optional_double(q, g.name, g.range.min, g.range.max)) {
@@ -16,10 +17,10 @@ ToneMap parse_tone_map(const Query& q) {
   return tone;
 }
 
-PreviewParams parse_preview_params(const Query& q, ImageFormat fallback) {
+PreviewParams parse_preview_params(const Query& q, ImageFormat fallback, ToneCurve curve) {
   PreviewParams p;
   p.format = query_enum(q, "format", fallback);
-  p.tone = parse_tone_map(q);
+  p.tone = parse_tone_map(q, curve);
   return p;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// The query parameters every image endpoint shares: format, exposure (stops), gamma.
+// The query parameters every image endpoint shares: format, exposure (stops), gamma, tone_mapping.
+#include "api/parameters.hpp"
 #include "api/params.hpp"
 #include "engine/image/image_io.hpp"
 
@@ -10,9 +11,11 @@ struct PreviewParams {
   ToneMap tone;
 };
 
-// `format` (png|exr|pfm|hdr, default png), `exposure` in [-64, 64], `gamma` in (0, 10] or empty = sRGB.
-PreviewParams parse_preview_params(const Query& q, ImageFormat fallback = ImageFormat::Png);
-// Only exposure and gamma (for endpoints that always answer PNG).
-ToneMap parse_tone_map(const Query& q);
+// `format` (png|exr|pfm|hdr, default png), `exposure` in [-64, 64], `gamma` in (0, 10] or empty = sRGB,
+// `tone_mapping` (a ToneCurve name, default `curve`).
+PreviewParams parse_preview_params(const Query& q, ImageFormat fallback = ImageFormat::Png,
+                                   ToneCurve curve = kToneMapping.fallback);
+// Only exposure, gamma and tone_mapping (for endpoints that always answer PNG).
+ToneMap parse_tone_map(const Query& q, ToneCurve curve = kToneMapping.fallback);
 
 }  // namespace lp::api

@@ -340,8 +340,9 @@ render::PassSet parse_passes(const Json& body) {
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
-  reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed",
-                               "mipmaps", "normal_maps", "sampling", "background", "clamp", "passes"});
+  reject_unknown_fields(
+      body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed", "mipmaps",
+             "normal_maps", "sampling", kRenderToneMapping.name, "background", "clamp", "passes"});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");
@@ -358,6 +359,7 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   r.settings.mipmaps = json_bool(body, "mipmaps", d.mipmaps);
   r.settings.normal_maps = json_bool(body, "normal_maps", d.normal_maps);
   r.settings.sampling = json_enum(body, "sampling", d.sampling, "");
+  r.tone_mapping = json_enum(body, kRenderToneMapping.name, kRenderToneMapping.fallback);
   r.settings.background = parse_background(body);
   if (member(body, "clamp")) r.settings.clamp = json_float(body, "clamp", 0, "");
   r.settings.passes = parse_passes(body);

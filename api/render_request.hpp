@@ -20,6 +20,7 @@ struct RenderRequest {
   render::SceneDesc scene;
   render::Lighting lighting;
   render::RenderSettings settings;
+  ToneCurve tone_mapping = kRenderToneMapping.fallback;  // the default of its 8-bit pictures
   // The camera once the scene's models are loaded, and what the view leaves out (set by the server).
   std::optional<render::SceneView> view;
 };

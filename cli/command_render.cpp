@@ -29,12 +29,12 @@ std::string help() {
          "map file (OpenEXR, PFM, Radiance HDR) or `default`, the built-in procedural sky, and a mesh's\n"
          "\"path\" a .gltf, .glb or .obj model file; relative paths are taken from the scene file's folder.\n"
          "Other options set the request's top-level fields, replacing the file's:\n"
-         "--width, --height, --spp, --max-depth, --seed, --mipmaps, --normal-maps, --sampling, and --envmap "
-         "(a path\n"
-         "relative to the working directory).\n\n" +
+         "--width, --height, --spp, --max-depth, --seed, --mipmaps, --normal-maps, --sampling, "
+         "--tone-mapping,\n"
+         "and --envmap (a path relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
-         image_params_help() +
+         image_params_help(ToneOption::RequestField) +
          option_line("--threads N",
                      fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
                                  api::kThreads.range.max, api::kThreads.default_text)) +
@@ -68,10 +68,11 @@ void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
   const bool quiet = args.take_switch("quiet");
   const auto file = args.take("output");
-  const api::PreviewParams image = take_image_params(args, file);
+  api::PreviewParams image = take_image_params(args, file, ToneOption::RequestField);
   const auto threads = thread_limit(args);
   const SceneRender scene =
       read_scene_file(args.positional()[0], args.take_rest_as_json(), api::RequestLimits{});
+  image.tone.curve = scene.request.tone_mapping;
   const auto bytes = write_image(render(scene, !quiet), image.format, image.tone);
   Output out(file);
   out.write(bytes);

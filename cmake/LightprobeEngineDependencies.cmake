@@ -19,6 +19,10 @@ macro(lightprobe_find_engine_dependencies find_command)
     cmake_language(CALL ${find_command} PkgConfig)
     pkg_check_modules(STB REQUIRED QUIET IMPORTED_TARGET stb)
   endif()
+  if(NOT TARGET PkgConfig::WEBP)  # libwebp and its animation encoder (libwebpmux): pkg-config files only
+    cmake_language(CALL ${find_command} PkgConfig)
+    pkg_check_modules(WEBP REQUIRED QUIET IMPORTED_TARGET libwebp libwebpmux)
+  endif()
   # tinygltf is used header-only: engine/model/tinygltf_implementation.cpp compiles it (with stb_image
   # from libstb and nlohmann_json). Only its header is looked for, not Debian's prebuilt library.
   if(NOT LIGHTPROBE_TINYGLTF_INCLUDE_DIR)

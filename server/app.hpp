@@ -34,10 +34,20 @@ inline JobManagerConfig prefilter_job_config(const Options& o) {
   return config;
 }
 
-// The render arenas a server may have working at once: a render job's, a prefilter's, a Redis worker's.
+// Turntables run one at a time (each renders its frames on every core its arena has), queued and kept
+// as renders are.
+inline JobManagerConfig turntable_job_config(const Options& o) {
+  JobManagerConfig config = render_job_config(o);
+  config.max_running = 1;
+  return config;
+}
+
+// The render arenas a server may have working at once: a render job's, a prefilter's, a turntable's, a
+// Redis worker's.
 inline int job_arenas(const Options& o) {
   const bool worker = o.scale_out.redis && o.scale_out.role != ServerRole::Api;
-  return render_job_config(o).max_running + prefilter_job_config(o).max_running + (worker ? 1 : 0);
+  return render_job_config(o).max_running + prefilter_job_config(o).max_running +
+         turntable_job_config(o).max_running + (worker ? 1 : 0);
 }
 
 // Decodes in flight together take at most the pixels of two maps of --max-pixels (and the budget).
@@ -60,6 +70,7 @@ struct App {
   HttpMetrics http_metrics;             // requests answered (GET /metrics)
   RenderCounters render_counters;       // what renders traced (GET /metrics)
   JobManager prefilters;                // prefiltered specular chains (routes/prefilter.cpp)
+  JobManager turntables;                // frames orbiting a model (routes/turntables.cpp)
   JobManager renders;  // declared last: destroyed first, cancelling and joining the render jobs
 
   explicit App(Options opts)
@@ -70,6 +81,7 @@ struct App {
         assets(options.assets.max_assets),
         models(memory),
         prefilters(prefilter_job_config(options)),
+        turntables(turntable_job_config(options)),
         renders(render_job_config(options)) {}
 };
 

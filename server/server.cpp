@@ -68,6 +68,7 @@ Server::Server(App& app)
   register_asset_routes(router_, app_);
   register_sample_routes(router_, app_);
   register_render_routes(router_, app_);
+  register_turntable_routes(router_, app_);
   register_fresnel_routes(router_, app_);
   register_median_cut_routes(router_, app_);
   register_sh_routes(router_, app_);

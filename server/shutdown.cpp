@@ -11,6 +11,7 @@ void shut_down(App& app, Server& server) {
   const auto start = Clock::now();
   server.stop_accepting();
   app.prefilters.shutdown(std::chrono::seconds(app.options.shutdown_grace_s));  // they stop at their next row
+  app.turntables.shutdown(std::chrono::seconds(app.options.shutdown_grace_s));  // at their next frame
   app.renders.shutdown(std::chrono::seconds(app.options.shutdown_grace_s));
   const auto streams_deadline = Clock::now() + kStreamDrain;
   while (app.event_streams.load() > 0 && Clock::now() < streams_deadline)

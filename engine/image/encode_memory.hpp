@@ -12,6 +12,11 @@ inline int64_t png_rgb8_encode_bytes(int64_t width, int64_t height) {
   return 12 * width * height + (1 << 20);
 }
 
+// encode_jpeg, encode_webp: the encoders' planes (WebP: ARGB, 4 B/px, and YUV) and the bytes handed back.
+inline int64_t rgb8_lossy_encode_bytes(int64_t width, int64_t height) {
+  return 10 * width * height + (1 << 20);
+}
+
 // write_image of a width x height float RGB image.
 inline int64_t encode_bytes(ImageFormat format, int64_t width, int64_t height) {
   const int64_t pixels = width * height;
@@ -24,6 +29,9 @@ inline int64_t encode_bytes(ImageFormat format, int64_t width, int64_t height) {
       return 8 * pixels + 4096;  // 4 B/px of RGBE, grown by doubling
     case ImageFormat::Png:
       return 3 * pixels + png_rgb8_encode_bytes(width, height);  // the tone-mapped pixels first
+    case ImageFormat::Jpeg:
+    case ImageFormat::Webp:
+      return 3 * pixels + rgb8_lossy_encode_bytes(width, height);
   }
   return 24 * pixels;
 }

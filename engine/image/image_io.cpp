@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "engine/core/error.hpp"
+#include "engine/image/encode_pixels8.hpp"
 
 namespace lp {
 
@@ -19,6 +20,10 @@ const char* format_mime_type(ImageFormat f) {
       return "image/vnd.radiance";
     case ImageFormat::Png:
       return "image/png";
+    case ImageFormat::Jpeg:
+      return "image/jpeg";
+    case ImageFormat::Webp:
+      return "image/webp";
   }
   return "application/octet-stream";
 }
@@ -72,6 +77,9 @@ std::vector<uint8_t> write_image(const Image& image, ImageFormat format, const T
       return write_hdr(image);
     case ImageFormat::Png:
       return write_png(image, tone);
+    case ImageFormat::Jpeg:
+    case ImageFormat::Webp:
+      return encode_pixels8({tone_map_rgb8(image, tone), image.width(), image.height(), 3}, format);
   }
   throw Error(ErrorKind::InvalidArgument, "unknown output format");
 }

@@ -16,13 +16,20 @@
 
 namespace lp {
 
-enum class ImageFormat { Exr, Pfm, Hdr, Png };
+// Jpeg and Webp are written only (8-bit, tone mapped, as PNG), for thumbnails and previews.
+enum class ImageFormat { Exr, Pfm, Hdr, Png, Jpeg, Webp };
 
 constexpr auto enum_entries(ImageFormat) {
   return std::to_array<EnumEntry<ImageFormat>>({{ImageFormat::Png, "png"},
                                                 {ImageFormat::Exr, "exr"},
                                                 {ImageFormat::Pfm, "pfm"},
-                                                {ImageFormat::Hdr, "hdr"}});
+                                                {ImageFormat::Hdr, "hdr"},
+                                                {ImageFormat::Jpeg, "jpeg"},
+                                                {ImageFormat::Webp, "webp"}});
+}
+// Whether the format holds 8-bit tone-mapped pixels (PNG, JPEG, WebP) rather than linear radiance.
+constexpr bool is_eight_bit(ImageFormat f) {
+  return f == ImageFormat::Png || f == ImageFormat::Jpeg || f == ImageFormat::Webp;
 }
 const char* format_mime_type(ImageFormat f);
 

@@ -14,9 +14,9 @@ std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone) {
   const ToneMapper map(tone);
   const auto src = image.data();
   std::vector<uint8_t> pixels(src.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, src.size(), 1 << 16),
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, src.size() / 3, 1 << 14),
                     [&](const tbb::blocked_range<size_t>& r) {
-                      for (size_t i = r.begin(); i != r.end(); ++i) pixels[i] = map(src[i]);
+                      for (size_t i = r.begin(); i != r.end(); ++i) map(&src[3 * i], &pixels[3 * i]);
                     });
   return pixels;
 }

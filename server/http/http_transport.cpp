@@ -227,7 +227,7 @@ bool HttpTransport::serve_requests(Connection& c) {
       open = got == Head::Incomplete;
       break;
     }
-    std::string client = limits_.trusted_proxies.client_of(c.ip, head.forwarded_for);
+    std::string client = c.proxy ? limits_.trusted_proxies.client_of(c.ip, head.forwarded_for) : c.ip;
     if (c.proxy) {
       if (const auto refusal = connections_.begin_request(client)) {
         answer_and_close(c.stream, {api::ErrorCode::TooManyConnections, *refusal});

@@ -11,6 +11,7 @@
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/image/resize.hpp"
 
 namespace lp::server {
 namespace {
@@ -108,6 +109,15 @@ std::vector<uint8_t> encode_render_picture(const RenderImage& image, const api::
   const Image& aux = pass_image(image, *pass.aux);
   if (params.format == ImageFormat::Png) return aux_png(aux, *pass.aux, params.tone);
   return write_image(aux, params.format, params.tone);
+}
+
+RenderImage fit_longest_side(const RenderImage& image, std::optional<int> longest) {
+  RenderImage out{
+      std::make_shared<const Image>(lp::fit_longest_side(*image.image, longest)), image.spp_done, {}};
+  for (size_t p = 0; p < image.passes.size(); ++p)
+    if (image.passes[p])
+      out.passes[p] = std::make_shared<const Image>(lp::fit_longest_side(*image.passes[p], longest));
+  return out;
 }
 
 int64_t render_picture_bytes(const api::RenderImagePass& pass, const api::PreviewParams& params,

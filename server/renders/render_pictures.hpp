@@ -12,6 +12,7 @@
 // passes where it does not: R, G, B (colour) and A (alpha, when the background is transparent; else
 // Alpha.A, a coverage over an opaque colour), Albedo.R/G/B, Ns.X/Y/Z (the shading normal), Depth.Z.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "api/preview_params.hpp"
@@ -26,6 +27,9 @@ namespace lp::server {
 std::vector<uint8_t> encode_render_picture(const RenderImage& image, const api::RenderImagePass& pass,
                                            const api::PreviewParams& params,
                                            const render::RenderSettings& settings);
+
+// The colour and every pass resampled so the longest side is `longest` (engine/image/resize.hpp).
+RenderImage fit_longest_side(const RenderImage& image, std::optional<int> longest);
 
 // The memory encode_render_picture takes beyond the images.
 int64_t render_picture_bytes(const api::RenderImagePass& pass, const api::PreviewParams& params,

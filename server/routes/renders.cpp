@@ -10,8 +10,10 @@
 #include "api/preview_params.hpp"
 #include "api/render_image_pass.hpp"
 #include "api/render_request.hpp"
+#include "api/thumbnail_params.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
+#include "engine/image/resize.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/renders/event_streams.hpp"
 #include "server/renders/queue_render.hpp"
@@ -81,18 +83,20 @@ void list(const App& app, httplib::Response& res) {
 
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
-  const auto params = api::parse_preview_params(req.params);
+  const auto params = api::parse_preview_params(req.params, ImageFormat::Png, job->request().tone_mapping);
   const auto pass = api::parse_render_image_pass(req.params);
   const RenderImage current = job->image();
   if (!current.image)
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
+  const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
+  const RenderImage pictures = size ? fit_longest_side(current, size) : current;
   const auto& settings = job->request().settings;
   auto memory = app.memory.reserve(render_picture_bytes(pass, params, settings), MemoryUse::Transient,
                                    std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  send_reserved(res, encode_render_picture(current, pass, params, settings), format_mime_type(params.format),
+  send_reserved(res, encode_render_picture(pictures, pass, params, settings), format_mime_type(params.format),
                 std::move(memory));
 }
 

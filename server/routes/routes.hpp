@@ -11,12 +11,13 @@ Handler endpoint_of(App& app, Endpoint endpoint) {
   return [&app, endpoint](const httplib::Request& req, httplib::Response& res) { endpoint(app, req, res); };
 }
 
-void register_meta_routes(Router& router, App& app);     // health, openapi
-void register_envmap_routes(Router& router, App& app);   // envmaps CRUD, image, distribution
-void register_asset_routes(Router& router, App& app);    // model assets: upload, list, metadata, delete
-void register_sample_routes(Router& router, App& app);   // samples, samples.png
-void register_render_routes(Router& router, App& app);   // render jobs: submit, status, image, events, cancel
-void register_fresnel_routes(Router& router, App& app);  // fresnel reflectance tables
+void register_meta_routes(Router& router, App& app);    // health, openapi
+void register_envmap_routes(Router& router, App& app);  // envmaps CRUD, image, distribution
+void register_asset_routes(Router& router, App& app);   // model assets: upload, list, metadata, delete
+void register_sample_routes(Router& router, App& app);  // samples, samples.png
+void register_render_routes(Router& router, App& app);  // render jobs: submit, status, image, events, cancel
+void register_turntable_routes(Router& router, App& app);   // turntables: submit, status, frames, outputs
+void register_fresnel_routes(Router& router, App& app);     // fresnel reflectance tables
 void register_median_cut_routes(Router& router, App& app);  // median-cut lights and pictures
 void register_sh_routes(Router& router, App& app);          // spherical harmonics and their picture
 void register_brdf_lut_routes(Router& router, App& app);    // the split-sum DFG table

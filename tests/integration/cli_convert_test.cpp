@@ -80,15 +80,42 @@ TEST(CliConvert, PngWithExposureAndGamma) {
       }
 }
 
+// --tone-mapping reinhard takes each channel v to v / (1 + v) before the gamma: round(255 sqrt(v / (1 + v))).
+// A name that is no curve fails as the API answers it.
+TEST(CliConvert, PngWithAToneCurve) {
+  const test::TempDir dir;
+  const auto source = test::envmap_path("forest.exr");
+  const test::CliRun run = test::run_cli(
+      {"convert", source.string(), "forest.png", "--tone-mapping", "reinhard", "--gamma", "2"}, dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const test::PngPixels png = test::decode_png(test::read_bytes(dir.path() / "forest.png"));
+  const Image original = read_image_file(source).image;
+  ASSERT_EQ(png.width, original.width());
+  for (int y = 0; y < original.height(); ++y)
+    for (int x = 0; x < original.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double v = std::max(0.0f, original.at(x, y)[c]);
+        ASSERT_NEAR(png.rgb[size_t((y * png.width + x) * 3 + c)], 255 * std::sqrt(v / (1 + v)), 0.51)
+            << x << "," << y;
+      }
+  const test::CliRun bad =
+      test::run_cli({"convert", source.string(), "bad.png", "--tone-mapping", "filmic"}, dir.path());
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_EQ(
+      bad.err,
+      "error: invalid_field: field 'tone_mapping': 'filmic' is not one of: standard, neutral, agx, aces, "
+      "reinhard\n");
+}
+
 TEST(CliConvert, BadInputFailsCleanlyAndLeavesNoFile) {
   const test::TempDir dir;
   const auto source = test::envmap_path("forest.exr").string();
-  const test::CliRun jpeg = test::run_cli({"convert", source, "forest.jpg"}, dir.path());
-  EXPECT_EQ(jpeg.exit_status, 2);
+  const test::CliRun tiff = test::run_cli({"convert", source, "forest.tif"}, dir.path());
+  EXPECT_EQ(tiff.exit_status, 2);
   EXPECT_EQ(
-      jpeg.err,
-      "error: bad_request: cannot tell an image format from the name 'forest.jpg': give --format (png, exr, "
-      "pfm, hdr)\n");
+      tiff.err,
+      "error: bad_request: cannot tell an image format from the name 'forest.tif': give --format (png, exr, "
+      "pfm, hdr, jpeg, webp)\n");
   const test::CliRun gamma = test::run_cli({"convert", source, "forest.png", "--gamma", "0"}, dir.path());
   EXPECT_EQ(gamma.exit_status, 2);
   EXPECT_EQ(gamma.err,

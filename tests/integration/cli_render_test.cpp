@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "engine/image/image_io.hpp"
 #include "support/cli_run.hpp"
@@ -120,19 +121,47 @@ TEST(CliRender, AModelBesideTheSceneFileRendersAsTheServerRendersIt) {
             << x << "," << y << " channel " << c;
 }
 
+// The PNG of a render of no objects on the white map (radiance 1 everywhere), one stop down and with
+// gamma 1, written with the extra options `more`: the one value of every pixel, or -1 if they differ.
+int white_render_png(const std::vector<std::string>& more) {
+  const test::TempDir dir;
+  write_white_map(dir.path());
+  write_text(dir.path() / "scene.json",
+             R"({"envmap":"white.pfm","scene":{"objects":[]},"width":4,"height":2,"spp":1})");
+  std::vector<std::string> args = {"render", "scene.json", "-o", "white.png", "--exposure",
+                                   "-1",     "--gamma",    "1",  "-q"};
+  args.insert(args.end(), more.begin(), more.end());
+  const test::CliRun run = test::run_cli(args, dir.path());
+  EXPECT_EQ(run.exit_status, 0) << run.err;
+  const test::PngPixels png = test::decode_png(test::read_bytes(dir.path() / "white.png"));
+  if (png.rgb.empty()) return -1;
+  for (const uint8_t v : png.rgb)
+    if (v != png.rgb[0]) return -1;
+  return png.rgb[0];
+}
+
+// A render's picture is PBR Neutral unless told: 0.5 - 0.04 = 0.46, 117.3 at gamma 1, written 117; the
+// option (or the scene's "tone_mapping") chooses another curve: reinhard 0.5 / 1.5 = 0.3333, 85.
+TEST(CliRender, ThePictureIsNeutralUnlessToneMappingSaysOtherwise) {
+  EXPECT_EQ(white_render_png({}), 117);
+  EXPECT_EQ(white_render_png({"--tone-mapping", "neutral"}), 117);
+  EXPECT_EQ(white_render_png({"--tone-mapping", "reinhard"}), 85);
+  EXPECT_EQ(white_render_png({"--tone-mapping", "standard"}), 128);
+}
+
 // A scene of no objects shows the map everywhere: a white map, radiance 1, darkened one stop and written
-// with gamma 1 is 0.5 * 255 = 127.5, written as 128, in every pixel. A map named on the command line is
-// found from the working directory.
+// with gamma 1 and no curve is 0.5 * 255 = 127.5, written as 128, in every pixel. A map named on the
+// command line is found from the working directory.
 TEST(CliRender, FieldsOnTheCommandLineReplaceTheFilesAndPngIsToneMapped) {
   const test::TempDir dir;
   write_white_map(dir.path());
   std::filesystem::create_directories(dir.path() / "scenes");
   write_text(dir.path() / "scenes" / "scene.json",
              R"({"envmap":"default","scene":{"objects":[]},"width":64,"height":64,"spp":1})");
-  const test::CliRun run =
-      test::run_cli({"render", "scenes/scene.json", "--envmap", "white.pfm", "--width", "4", "--height", "2",
-                     "-o", "white.png", "--exposure", "-1", "--gamma", "1", "-q"},
-                    dir.path());
+  const test::CliRun run = test::run_cli(
+      {"render", "scenes/scene.json", "--envmap", "white.pfm", "--width", "4", "--height", "2", "-o",
+       "white.png", "--exposure", "-1", "--gamma", "1", "--tone-mapping", "standard", "-q"},
+      dir.path());
   ASSERT_EQ(run.exit_status, 0) << run.err;
   const test::PngPixels png = test::decode_png(test::read_bytes(dir.path() / "white.png"));
   ASSERT_EQ(png.width, 4);

@@ -112,7 +112,8 @@ TEST(QueryPolicy, StatedMessages) {
   EXPECT_EQ(r.status, 400);
   EXPECT_EQ(
       error_message(r),
-      "field 'width': unknown parameter (expected one of: projection, size, face, format, exposure, gamma)");
+      "field 'width': unknown parameter (expected one of: projection, size, face, format, exposure, gamma, "
+      "tone_mapping)");
   r = send("GET", "/api/v1/envmaps/default/image?format=png&format=exr");
   EXPECT_EQ(r.status, 400);
   EXPECT_EQ(error_message(r), "field 'format': given more than once");

@@ -37,6 +37,13 @@ for f in map.png marks.png windows.png regions.png render.png; do
   [ "\$(head -c 8 "\$f" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || { echo "\$f is not a PNG" >&2; exit 1; }
 done
 [ "\$(head -c 4 map.exr | od -An -tx1 | tr -d ' \n')" = 762f3101 ] || { echo "map.exr is not an EXR" >&2; exit 1; }
+for f in sheet.jpg thumb.jpg; do
+  [ "\$(head -c 3 "\$f" | od -An -tx1 | tr -d ' \n')" = ffd8ff ] || { echo "\$f is not a JPEG" >&2; exit 1; }
+done
+for f in frame2.webp turntable.webp; do
+  [ "\$(tail -c +9 "\$f" | head -c 4)" = WEBP ] || { echo "\$f is not a WebP" >&2; exit 1; }
+done
+[ "\$(head -c 4 frames.zip | od -An -tx1 | tr -d ' \n')" = 504b0304 ] || { echo "frames.zip is not a zip" >&2; exit 1; }
 [ "\$(stat -c %s samples.bin)" = \$((1000000 * 13 * 4)) ] || { echo "samples.bin has the wrong size" >&2; exit 1; }
 for _ in \$(seq 300); do
   status="\$(curl \$S/renders/\$big | field status)"
