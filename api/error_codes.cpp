@@ -36,6 +36,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{HttpVersionNotSupported, 505, "http_version_not_supported", {}},
     ErrorCodeEntry{Conflict, 409, "conflict", {}},
     ErrorCodeEntry{NoImageYet, 409, "no_image_yet", {}},
+    ErrorCodeEntry{PassNotRendered, 409, "pass_not_rendered", {}},
     ErrorCodeEntry{NotInterrupted, 409, "not_interrupted", {}},
     ErrorCodeEntry{CannotResume, 409, "cannot_resume", {}},
     ErrorCodeEntry{EnvmapMissing, 409, "envmap_missing", {}},

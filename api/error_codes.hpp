@@ -42,6 +42,7 @@ enum class ErrorCode {
   // State of maps and render jobs.
   Conflict,
   NoImageYet,
+  PassNotRendered,  // an image pass the render's request did not ask for
   NotInterrupted,
   CannotResume,
   EnvmapMissing,

@@ -155,9 +155,16 @@ MeshObject parse_mesh(const Json& o, const std::string& prefix) {
 
 SceneObject parse_object(const Json& o, const std::string& prefix) {
   if (!o.is_object()) throw invalid_field(prefix, fmt::format("must be an object, got {}", describe(o)));
-  const std::string type = required_enum(o, "type", {"sphere", "mesh", "plane"}, prefix);
+  const std::string type = required_enum(o, "type", {"sphere", "mesh", "plane", "ground"}, prefix);
   SceneObject object;
-  if (type == "sphere") {
+  if (type == "ground") {
+    reject_unknown_fields(o, {"type", "shadow_catcher", "height", "material"}, prefix);
+    render::Ground ground;
+    ground.shadow_catcher = json_bool(o, "shadow_catcher", ground.shadow_catcher, prefix);
+    if (member(o, "height")) ground.height = json_float(o, "height", 0, prefix);
+    object.shape = PlaneObject{{0, 0, ground.height.value_or(0.0f)}, {0, 0, 1}};
+    object.ground = ground;
+  } else if (type == "sphere") {
     reject_unknown_fields(o, {"type", "center", "radius", "material"}, prefix);
     SphereObject s;
     s.center = required_vec3(o, "center", prefix);
@@ -290,12 +297,52 @@ Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
   return lighting;
 }
 
+// "map", "transparent" or a linear colour [r, g, b].
+render::Background parse_background(const Json& body) {
+  render::Background b;
+  const Json* v = member(body, "background");
+  if (!v) return b;
+  if (v->is_array()) {
+    b.mode = render::BackgroundMode::Color;
+    b.color = *json_vec3(body, "background", "");
+    return b;
+  }
+  const std::vector<std::string> allowed = {enum_name(render::BackgroundMode::Map),
+                                            enum_name(render::BackgroundMode::Transparent)};
+  if (!v->is_string())
+    throw invalid_field("background", fmt::format("must be '{}', '{}' or a colour [r, g, b], got {}",
+                                                  allowed[0], allowed[1], describe(*v)));
+  b.mode = *parse_enum<render::BackgroundMode>(json_enum(body, "background", allowed.front(), allowed));
+  return b;
+}
+
+// Names of auxiliary passes, each at most once.
+render::PassSet parse_passes(const Json& body) {
+  render::PassSet passes;
+  const Json* v = member(body, "passes");
+  if (!v) return passes;
+  const std::string names = enum_names_joined<render::AuxPass>();
+  if (!v->is_array())
+    throw invalid_field("passes",
+                        fmt::format("must be an array of pass names ({}), got {}", names, describe(*v)));
+  for (size_t i = 0; i < v->size(); ++i) {
+    const std::string field = fmt::format("passes[{}]", i);
+    const Json& name = (*v)[i];
+    const auto pass = name.is_string() ? parse_enum<render::AuxPass>(name.get<std::string>()) : std::nullopt;
+    if (!pass) throw invalid_field(field, fmt::format("must be one of {}, got {}", names, describe(name)));
+    if (passes.has(*pass)) throw invalid_field(field, fmt::format("'{}' is named twice", enum_name(*pass)));
+    passes.add(*pass);
+  }
+  return passes;
+}
+
 }  // namespace
 
 RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
-  reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed",
-                               "mipmaps", "normal_maps", "sampling", kRenderToneMapping.name});
+  reject_unknown_fields(
+      body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed", "mipmaps",
+             "normal_maps", "sampling", kRenderToneMapping.name, "background", "clamp", "passes"});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");
@@ -313,6 +360,11 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   r.settings.normal_maps = json_bool(body, "normal_maps", d.normal_maps);
   r.settings.sampling = json_enum(body, "sampling", d.sampling, "");
   r.tone_mapping = json_enum(body, kRenderToneMapping.name, kRenderToneMapping.fallback);
+  r.settings.background = parse_background(body);
+  if (member(body, "clamp")) r.settings.clamp = json_float(body, "clamp", 0, "");
+  r.settings.passes = parse_passes(body);
+  // A cut-out's pictures are RGBA: its alpha is always kept.
+  if (r.settings.background.mode == BackgroundMode::Transparent) r.settings.passes.add(AuxPass::Alpha);
   as_invalid_field([&] {
     r.scene.validate("scene");
     r.lighting.validate("lighting");

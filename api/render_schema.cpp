@@ -13,6 +13,13 @@ void describe_render(Json& out, const RenderRequest& request, const RenderProgre
   out["mipmaps"] = s.mipmaps;
   out["normal_maps"] = s.normal_maps;
   out["sampling"] = enum_name(s.sampling);
+  if (s.background.mode == render::BackgroundMode::Color)
+    out["background"] = {s.background.color.x, s.background.color.y, s.background.color.z};
+  else
+    out["background"] = enum_name(s.background.mode);
+  out["clamp"] = s.clamp ? Json(*s.clamp) : Json(nullptr);
+  out["passes"] = Json::array();
+  for (const auto p : s.passes.list()) out["passes"].push_back(enum_name(p));
   out["envmap"] = request.envmap;
   out["scene"] =
       request.preset ? Json{{"preset", *request.preset}} : Json{{"objects", request.scene.objects.size()}};

@@ -136,4 +136,32 @@ std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression, P
   return stream.take();
 }
 
+std::vector<uint8_t> write_exr_channels(int width, int height, std::span<const ExrChannel> channels,
+                                        ExrCompression compression) {
+  enable_exr_threads();
+  Imf::Header header(width, height);
+  header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
+  for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+  MemoryOStream stream;
+  {
+    Imf::OutputFile file(stream, header);
+    Imf::FrameBuffer fb;
+    for (const ExrChannel& c : channels)
+      fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data)),
+                                   sizeof(float) * c.stride, sizeof(float) * c.stride * size_t(width)));
+    file.setFrameBuffer(fb);
+    file.writePixels(height);
+  }
+  return stream.take();
+}
+
+std::vector<uint8_t> write_exr_rgba(const Image& color, const Image& alpha, ExrCompression compression) {
+  if (alpha.width() != color.width() || alpha.height() != color.height())
+    throw Error(ErrorKind::Internal, "RGBA: the alpha does not match the colour's size");
+  const float* c = color.data().data();
+  const ExrChannel channels[] = {
+      {"R", c, 3}, {"G", c + 1, 3}, {"B", c + 2, 3}, {"A", alpha.data().data(), 3}};
+  return write_exr_channels(color.width(), color.height(), channels, compression);
+}
+
 }  // namespace lp

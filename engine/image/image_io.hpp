@@ -85,6 +85,19 @@ constexpr auto enum_entries(PixelPrecision) {
 }
 std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression = ExrCompression::Zip,
                                PixelPrecision precision = PixelPrecision::Float);  // RGB
+// One channel of an OpenEXR file: its name and its values, `stride` floats apart in row-major order.
+struct ExrChannel {
+  std::string name;
+  const float* data;
+  size_t stride;
+};
+// Any channels, as 32-bit floats (OpenEXR stores them sorted by name).
+std::vector<uint8_t> write_exr_channels(int width, int height, std::span<const ExrChannel> channels,
+                                        ExrCompression compression = ExrCompression::Zip);
+// R, G, B from `color` (premultiplied by alpha, as a transparent render's colour is) and A from the
+// first channel of `alpha`.
+std::vector<uint8_t> write_exr_rgba(const Image& color, const Image& alpha,
+                                    ExrCompression compression = ExrCompression::Zip);
 std::vector<uint8_t> write_pfm(const Image& image);  // little-endian, rows bottom to top
 std::vector<uint8_t> write_hdr(const Image& image);  // Radiance RGBE
 std::vector<uint8_t> write_png(const Image& image, const ToneMap& tone = {});  // 8-bit RGB
@@ -93,6 +106,10 @@ std::vector<uint8_t> write_image(const Image& image, ImageFormat format, const T
 // 8-bit previews that draw on top of the tone-mapped image: tone map, paint, then encode.
 std::vector<uint8_t> tone_map_rgb8(const Image& image, const ToneMap& tone);  // w * h * 3 bytes
 std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb8, int width, int height);
+// 8-bit RGBA with straight alpha from a premultiplied colour and its alpha (the first channel of `alpha`):
+// each colour is divided by its alpha before the tone map (black where alpha is 0). w * h * 4 bytes.
+std::vector<uint8_t> tone_map_rgba8(const Image& color, const Image& alpha, const ToneMap& tone);
+std::vector<uint8_t> encode_png_rgba8(std::span<const uint8_t> rgba8, int width, int height);
 
 void write_file(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 

@@ -3,18 +3,22 @@
 #include <cmath>
 
 #include "engine/core/error.hpp"
+#include "engine/render/aux_passes.hpp"
 
 namespace lp::render {
 
-Film::Film(int width, int height)
+Film::Film(int width, int height, PassSet passes)
     : width_(width),
       height_(height),
+      passes_(passes),
       pass_(size_t(width) * size_t(height) * 3),
       pass_squares_(size_t(width) * size_t(height)),
+      aux_pass_(size_t(width) * size_t(height) * size_t(passes.channels())),
       pass_rays_(size_t(width) * size_t(height)),
       squares_(size_t(width) * size_t(height)),
       rays_(size_t(width) * size_t(height)),
       total_(size_t(width) * size_t(height) * 3),
+      aux_total_(aux_pass_.size()),
       count_(size_t(width) * size_t(height)) {}
 
 void Film::merge_pass(int spp) {
@@ -25,6 +29,7 @@ void Film::merge_pass(int spp) {
     }
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
+  merge_aux();
   for (uint32_t& c : count_) c += uint32_t(spp);
   samples_ += uint64_t(spp) * count_.size();
 }
@@ -34,6 +39,7 @@ void Film::merge_pass(std::span<const uint32_t> counts) {
     throw Error(ErrorKind::InvalidArgument, "film: the pass's counts do not match the film");
   std::lock_guard lock(mutex_);
   for (size_t i = 0; i < total_.size(); ++i) total_[i] += pass_[i];
+  merge_aux();
   for (size_t i = 0; i < count_.size(); ++i) {
     count_[i] += counts[i];
     samples_ += counts[i];
@@ -49,6 +55,20 @@ void Film::restore(const Image& mean, int spp) {
   for (uint32_t& c : count_) c = uint32_t(spp);
   samples_ = uint64_t(spp) * count_.size();
   restored_ = true;
+}
+
+void Film::merge_aux() {
+  for (size_t i = 0; i < aux_total_.size(); ++i) aux_total_[i] += aux_pass_[i];
+}
+
+void Film::restore(AuxPass p, const Image& mean) {
+  if (!passes_.has(p) || mean.width() != width_ || mean.height() != height_)
+    throw Error(ErrorKind::InvalidArgument, "film: the restored pass does not match the render");
+  const size_t n = size_t(passes_.channels());
+  std::lock_guard lock(mutex_);
+  for (size_t i = 0; i < count_.size(); ++i)
+    aux_sums(p, passes_, mean.at(int(i % size_t(width_)), int(i / size_t(width_))), count_[i],
+             &aux_total_[i * n]);
 }
 
 bool Film::has_deviations() const {
@@ -97,6 +117,12 @@ Image Film::mean() const {
     for (size_t k = i * 3; k < i * 3 + 3; ++k) out[k] = float(total_[k] * inv);
   }
   return image;
+}
+
+Image Film::mean(AuxPass p) const {
+  if (!passes_.has(p)) throw Error(ErrorKind::InvalidArgument, "film: the render holds no such pass");
+  std::lock_guard lock(mutex_);
+  return aux_image(p, passes_, width_, height_, aux_total_, count_);
 }
 
 }  // namespace lp::render

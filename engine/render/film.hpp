@@ -9,28 +9,34 @@
 // been uniform the film also sums each pixel's squared samples and the rays its samples traced, from
 // which the first adaptive pass takes the pixels' deviations and costs (kept from then on, the same
 // for every later adaptive pass).
+//
+// The auxiliary passes a render asks for (scene_desc.hpp, AuxPass) are summed beside the colour, with the
+// same samples and counts; a film without them holds none of their memory.
+#include <algorithm>
 #include <cstdint>
 #include <mutex>
 #include <span>
 #include <vector>
 
 #include "engine/image/image.hpp"
+#include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
 
 class Film {
  public:
-  Film(int width, int height);
+  Film(int width, int height, PassSet passes = {});
   // The bytes a film of width x height pixels holds, with an adaptive pass's counts.
-  static int64_t memory_bytes(int64_t width, int64_t height) {
+  static int64_t memory_bytes(int64_t width, int64_t height, const PassSet& passes = {}) {
     return width * height *
-           (3 * int64_t(sizeof(float) + sizeof(double)) + int64_t(sizeof(float) + sizeof(double)) +
-            int64_t(sizeof(uint32_t) + sizeof(uint64_t)) + 2 * int64_t(sizeof(uint32_t)) +
-            2 * int64_t(sizeof(float)));
+           ((3 + passes.channels()) * int64_t(sizeof(float) + sizeof(double)) +
+            int64_t(sizeof(float) + sizeof(double)) + int64_t(sizeof(uint32_t) + sizeof(uint64_t)) +
+            2 * int64_t(sizeof(uint32_t)) + 2 * int64_t(sizeof(float)));
   }
 
   int width() const { return width_; }
   int height() const { return height_; }
+  const PassSet& passes() const { return passes_; }
 
   // The samples of pixel (x, y) so far: the index its next sample draws.
   uint32_t count(int x, int y) const { return count_[size_t(y) * size_t(width_) + size_t(x)]; }
@@ -44,6 +50,11 @@ class Film {
     pass_squares_[i] = sum_squares;
     pass_rays_[i] = rays;
   }
+  // The staging sums of the auxiliary channels of one pixel (passes().channels() values).
+  void set_pass_aux(int x, int y, const float* sums) {
+    const size_t n = size_t(passes_.channels()), i = (size_t(y) * size_t(width_) + size_t(x)) * n;
+    std::copy(sums, sums + n, &aux_pass_[i]);
+  }
   // Adds the staged pass of `spp` samples per pixel to the totals.
   void merge_pass(int spp);
   // Adds the staged pass of counts[i] samples of pixel i (row-major) to the totals.
@@ -51,6 +62,8 @@ class Film {
   // Replaces the totals with those of an earlier run: its mean image over `spp` samples per pixel.
   // Its deviations are unknown, so adaptive passes are refused afterwards.
   void restore(const Image& mean, int spp);
+  // The same for auxiliary pass p (which the film holds), after restore().
+  void restore(AuxPass p, const Image& mean);
 
   // Whether deviations() can be had: no restore(), and at least 2 samples per pixel if every pass was
   // uniform.
@@ -66,17 +79,22 @@ class Film {
   int spp() const;  // samples per pixel: the mean count, rounded down
   uint64_t samples() const;
   Image mean() const;
+  // The mean of auxiliary pass p (which the film holds), as aux_passes.hpp's aux_mean gives it.
+  Image mean(AuxPass p) const;
 
  private:
+  void merge_aux();  // with the lock held
+
   int width_, height_;
-  std::vector<float> pass_, pass_squares_;
+  PassSet passes_;
+  std::vector<float> pass_, pass_squares_, aux_pass_;
   std::vector<uint32_t> pass_rays_;
   std::vector<double> squares_;  // sums of squared channels while every pass is uniform
   std::vector<uint64_t> rays_;   // and of rays
   std::vector<float> deviation_, cost_;
   bool restored_ = false;
   mutable std::mutex mutex_;  // guards total_, count_ and samples_
-  std::vector<double> total_;
+  std::vector<double> total_, aux_total_;
   std::vector<uint32_t> count_;
   uint64_t samples_ = 0;
 };

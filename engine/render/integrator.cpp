@@ -41,11 +41,15 @@ Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_p
                        const IntegratorConfig& config)
     : scene_(scene), bsdfs_(bsdfs), env_(env), sun_(sun), lights_(lights), config_(config) {}
 
-Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit,
-                         PathSampler& sampler, uint64_t& rays) const {
-  Rgb result{}, beta{1, 1, 1};
+PathSample Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit,
+                                PathSampler& sampler, uint64_t& rays) const {
+  if (camera_hit && config_.catchers[camera_hit->object])
+    return shadow_catcher(camera_ray, *camera_hit, sampler, rays);
+  PathSample out;
+  Rgb& result = out.color;
+  Rgb beta{1, 1, 1};
   Ray ray = camera_ray;
-  bool delta_chain = true, last_delta = true;
+  bool delta_chain = true, last_delta = true, albedo_taken = false;
   float bsdf_pdf = 0, eta_scale = 1;
   float sun_choice = 0;  // at the last hit, the probability that its light sample went to the sun
   const bool lit_by_map =
@@ -53,20 +57,30 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
   EnvPixel escape{};  // where a bounce ray lands in the map if it escapes, located while it is traced
   RayCone cone = RayCone::from_pixel(config_.pixel_spread);
   Rgb absorption{};  // of the volume the path is inside
+  // Light reaching the first hit over another surface is indirect: what the path finds from its third
+  // vertex on, and the light sampled at its second.
+  const auto add = [&](Rgb c, bool indirect) { result += indirect ? clamped(c) : c; };
   for (int depth = 0;; ++depth) {
     ++rays;
     const std::optional<SurfaceHit> hit = depth == 0 ? camera_hit : scene_.intersect(ray);
     if (!hit) {
       if (depth == 0) escape = env_.locate(ray.direction);
-      result += beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf, 1 - sun_choice);
-      if (sun_) result += beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf, sun_choice);
+      add(beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf, 1 - sun_choice),
+          depth >= 2);
+      if (sun_) add(beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf, sun_choice), depth >= 2);
       break;
     }
     cone.advance(hit->t);
     if (!is_black(absorption)) beta *= transmittance(absorption, hit->t);
     ModelBsdf model_bsdf;
     const Shading shading = shade(*hit, -ray.direction, cone, model_bsdf);
-    result += beta * shading.emission;
+    if (depth == 0) {
+      out.alpha = 1;
+      out.hit = true;
+      out.depth = hit->t;
+      out.normal = shading.frame.n;
+    }
+    add(beta * shading.emission, depth >= 2);
     if (depth >= config_.max_depth) break;
     const Bsdf& bsdf = shading.bsdf;
 
@@ -77,9 +91,14 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
     const float u_roulette = sampler.get_1d();
 
     sun_choice = sun_ ? sun_->selection(shading.frame.n) : 0;
-    if (bsdf.has_non_delta_lobe()) result += beta * direct(shading, u_light, u_choice.x, sun_choice, rays);
+    if (bsdf.has_non_delta_lobe())
+      add(beta * direct(shading, u_light, u_choice.x, sun_choice, rays), depth >= 1);
 
     const std::optional<BsdfSample> s = bsdf.sample(shading.wo, u_choice.y, u_bsdf);
+    if (!albedo_taken && bsdf.has_non_delta_lobe()) {
+      out.albedo = s ? beta * s->weight : Rgb{};
+      albedo_taken = true;
+    }
     if (!s || is_black(s->weight)) break;
     beta *= s->weight;
     last_delta = s->delta;
@@ -99,7 +118,47 @@ Rgb Integrator::radiance(const Ray& camera_ray, const std::optional<SurfaceHit>&
     ray = {EmbreeScene::offset_origin(*hit, wi), wi};
     if (lit_by_map || delta_chain) escape = env_.locate(wi);
   }
-  return result;
+  return out;
+}
+
+PathSample Integrator::shadow_catcher(const Ray& ray, const SurfaceHit& hit, PathSampler& sampler,
+                                      uint64_t& rays) const {
+  ++rays;
+  const RayCone camera_cone = RayCone::from_pixel(config_.pixel_spread);
+  RayCone cone = camera_cone;
+  cone.advance(hit.t);
+  ModelBsdf model_bsdf;
+  const Shading s = shade(hit, -ray.direction, cone, model_bsdf);
+  const Point2 u_light = sampler.get_2d();
+  const Point2 u_choice = sampler.get_2d();
+  const Point2 u_bsdf = sampler.get_2d();
+  const float sun_choice = sun_ ? sun_->selection(s.frame.n) : 0;
+  Rgb unshadowed{};
+  Rgb lit =
+      s.bsdf.has_non_delta_lobe() ? direct(s, u_light, u_choice.x, sun_choice, rays, &unshadowed) : Rgb{};
+  if (const auto b = s.bsdf.sample(s.wo, u_choice.y, u_bsdf); b && !is_black(b->weight)) {
+    const Vec3 wi = normalize(s.frame.to_world(b->wi));
+    if (same_side(s, wi)) {
+      Rgb c = b->weight * escaped(env_.locate(wi), cone.spread, 1, false, b->delta, b->pdf, 1 - sun_choice);
+      if (sun_) c += b->weight * escaped_sun(wi, 1, b->delta, b->pdf, sun_choice);
+      unshadowed += c;
+      if (visible(hit, wi, rays)) lit += c;
+    }
+  }
+  const float open = unshadowed.x + unshadowed.y + unshadowed.z;
+  const float left = open > 0 ? std::clamp((lit.x + lit.y + lit.z) / open, 0.0f, 1.0f) : 1.0f;
+  Rgb behind = escaped(env_.locate(ray.direction), camera_cone.spread, 0, true, true, 0, 1);
+  if (sun_) behind += escaped_sun(ray.direction, 0, true, 0, 0);
+  PathSample out;
+  out.color = behind * left;
+  out.alpha = 1 - left;
+  return out;
+}
+
+Rgb Integrator::clamped(Rgb c) const {
+  if (!config_.clamp) return c;
+  const float m = max_component(c);
+  return m > *config_.clamp ? c * (*config_.clamp / m) : c;
 }
 
 Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayCone& cone,
@@ -132,7 +191,16 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
   const Rgb seen = last_delta
                        ? (config_.mipmaps ? env_.radiance_over(pixel, spread) : env_.radiance_sharp(pixel))
                        : env_.radiance(pixel);
-  if (depth == 0) return config_.env_visible ? seen : Rgb{};
+  if (depth == 0) {
+    switch (config_.background.mode) {
+      case BackgroundMode::Map:
+        return config_.env_visible ? seen : Rgb{};
+      case BackgroundMode::Transparent:
+        return {};
+      case BackgroundMode::Color:
+        return config_.background.color;
+    }
+  }
   switch (config_.mode) {
     case LightingMode::Bsdf:
       return seen;
@@ -149,52 +217,62 @@ Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool del
 
 Rgb Integrator::escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const {
   if (!sun_->contains(direction)) return {};
-  if (depth == 0) return config_.env_visible ? sun_->radiance() : Rgb{};
+  if (depth == 0)
+    return config_.env_visible && config_.background.mode == BackgroundMode::Map ? sun_->radiance() : Rgb{};
   return last_delta ? sun_->radiance() : sun_->radiance() * mis_weight(bsdf_pdf, choice * sun_->pdf());
 }
 
-Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, float sun_choice,
-                       uint64_t& rays) const {
+Rgb Integrator::direct(const Shading& s, Point2 u_light, float u_select, float sun_choice, uint64_t& rays,
+                       Rgb* unshadowed) const {
   switch (config_.mode) {
     case LightingMode::EnvMap: {
-      if (u_select < sun_choice) return direct_env(s, sun_->sample(u_light), sun_choice * sun_->pdf(), rays);
+      if (u_select < sun_choice)
+        return direct_env(s, sun_->sample(u_light), sun_choice * sun_->pdf(), rays, unshadowed);
       const LightSample light = env_.sample_importance(u_light);
-      return direct_env(s, light, (1 - sun_choice) * light.pdf, rays);
+      return direct_env(s, light, (1 - sun_choice) * light.pdf, rays, unshadowed);
     }
     case LightingMode::Uniform:
-      return direct_env(s, env_.sample_uniform(u_light), kUniformSpherePdf, rays);
+      return direct_env(s, env_.sample_uniform(u_light), kUniformSpherePdf, rays, unshadowed);
     case LightingMode::Bsdf:
       return {};
     case LightingMode::MedianCut: {
       const size_t n = lights_.size();
       if (n == 0) return {};
       const size_t i = std::min(n - 1, size_t(u_select * float(n)));
-      return direct_directional(s, lights_[i], rays) * float(n);
+      Rgb open{};
+      const Rgb c = direct_directional(s, lights_[i], rays, &open) * float(n);
+      if (unshadowed) *unshadowed += open * float(n);
+      return c;
     }
     case LightingMode::MedianCutAll: {
       Rgb sum{};
-      for (const DirectionalLight& light : lights_) sum += direct_directional(s, light, rays);
+      for (const DirectionalLight& light : lights_) sum += direct_directional(s, light, rays, unshadowed);
       return sum;
     }
   }
   return {};
 }
 
-Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf,
-                           uint64_t& rays) const {
+Rgb Integrator::direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays,
+                           Rgb* unshadowed) const {
   if (!(light_pdf > 0) || is_black(light.radiance) || !same_side(s, light.direction)) return {};
   const Vec3 wi = s.frame.to_local(light.direction);
   const Rgb f = s.bsdf.eval(s.wo, wi);
-  if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
+  if (is_black(f)) return {};
   const float weight = mis_weight(light_pdf, s.bsdf.pdf(s.wo, wi));
-  return f * light.radiance * (weight / light_pdf);
+  const Rgb c = f * light.radiance * (weight / light_pdf);
+  if (unshadowed) *unshadowed += c;
+  return visible(s.hit, light.direction, rays) ? c : Rgb{};
 }
 
-Rgb Integrator::direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const {
+Rgb Integrator::direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays,
+                                   Rgb* unshadowed) const {
   if (!same_side(s, light.direction)) return {};
   const Rgb f = s.bsdf.eval(s.wo, s.frame.to_local(light.direction));
-  if (is_black(f) || !visible(s.hit, light.direction, rays)) return {};
-  return f * light.power;
+  if (is_black(f)) return {};
+  const Rgb c = f * light.power;
+  if (unshadowed) *unshadowed += c;
+  return visible(s.hit, light.direction, rays) ? c : Rgb{};
 }
 
 bool Integrator::visible(const SurfaceHit& hit, Vec3 direction, uint64_t& rays) const {

@@ -13,6 +13,9 @@
 // A path that refracts into a model's closed volume (KHR_materials_volume) is attenuated by
 // Beer-Lambert, exp(-sigma t), along every segment until it refracts out again.
 // Russian roulette from the fifth bounce on; `max_depth` bounces at most.
+// Camera rays that escape see the background (scene_desc.hpp, Background); one that meets a shadow
+// catcher sees the background darkened by the catcher's shadow (shadow_catcher below). Each path also
+// gives the auxiliary passes of its first hit (scene_desc.hpp, AuxPass).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -37,6 +40,19 @@ struct IntegratorConfig {
   bool mipmaps = true;      // texture levels from ray cones (else level 0)
   bool normal_maps = true;
   float texture_anisotropy = kMaxTextureAnisotropy;  // RenderSettings::texture_anisotropy
+  Background background;
+  std::optional<float> clamp;  // RenderSettings::clamp
+  std::vector<bool> catchers;  // by object: whether it is a shadow catcher
+};
+
+// What one camera sample gives: its radiance and the auxiliary passes of its first hit.
+struct PathSample {
+  Rgb color;
+  float alpha = 0;  // coverage, or a shadow catcher's shadow opacity
+  Rgb albedo;
+  Vec3 normal;
+  float depth = 0;   // the distance to the first visible hit, when `hit`
+  bool hit = false;  // the camera ray met a visible surface
 };
 
 class Integrator {
@@ -46,10 +62,10 @@ class Integrator {
              const SunLight* sun, const std::vector<DirectionalLight>& lights,
              const IntegratorConfig& config);
 
-  // Radiance along a camera ray, whose hit the caller traced (in packets, EmbreeScene::intersect_packet).
-  // Adds the rays of the path to `rays`, the camera ray included.
-  Rgb radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit, PathSampler& sampler,
-               uint64_t& rays) const;
+  // Radiance along a camera ray, whose hit the caller traced (in packets, EmbreeScene::intersect_packet),
+  // and the passes of its first hit. Adds the rays of the path to `rays`, the camera ray included.
+  PathSample radiance(const Ray& camera_ray, const std::optional<SurfaceHit>& camera_hit,
+                      PathSampler& sampler, uint64_t& rays) const;
 
  private:
   struct Shading {
@@ -77,10 +93,22 @@ class Integrator {
   // The sun seen along an escaping ray, weighed as escaped() weighs the map.
   // `choice`: the probability that the last hit's light sample went to the sun.
   Rgb escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const;
+  // What a camera ray that meets a shadow catcher sees: the background behind the catcher times the
+  // fraction of the catcher's direct light its shadows leave, one light sample and one BSDF sample each
+  // traced with and without their shadow ray, as OSPRay's shadow catcher does. Where nothing shadows the
+  // catcher the two sums are the same numbers added in the same order, so the fraction is exactly 1.
+  PathSample shadow_catcher(const Ray& ray, const SurfaceHit& hit, PathSampler& sampler,
+                            uint64_t& rays) const;
   // `u_select` picks a median-cut light, or the sun (with probability `sun_choice`) over the map.
-  Rgb direct(const Shading& s, Point2 u_light, float u_select, float sun_choice, uint64_t& rays) const;
-  Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays) const;
-  Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays) const;
+  // `unshadowed`, when given, also sums the contributions as if nothing occluded them.
+  Rgb direct(const Shading& s, Point2 u_light, float u_select, float sun_choice, uint64_t& rays,
+             Rgb* unshadowed = nullptr) const;
+  Rgb direct_env(const Shading& s, const LightSample& light, float light_pdf, uint64_t& rays,
+                 Rgb* unshadowed) const;
+  Rgb direct_directional(const Shading& s, const DirectionalLight& light, uint64_t& rays,
+                         Rgb* unshadowed) const;
+  // An indirect contribution within the clamp.
+  Rgb clamped(Rgb c) const;
   bool visible(const SurfaceHit& hit, Vec3 direction, uint64_t& rays) const;
 
   const EmbreeScene& scene_;

@@ -3,13 +3,16 @@
 #include <algorithm>
 
 #include "engine/core/error.hpp"
+#include "engine/render/aux_passes.hpp"
 
 namespace lp::render {
 
-PartialFilm::PartialFilm(int width, int height)
+PartialFilm::PartialFilm(int width, int height, PassSet passes)
     : width_(width),
       height_(height),
+      passes_(passes),
       sums_(size_t(width) * size_t(height) * 3),
+      aux_(size_t(width) * size_t(height) * size_t(passes.channels())),
       counts_(size_t(width) * size_t(height)) {}
 
 std::vector<SampleRange> ranges_outside(int spp, int per_item, std::vector<SampleRange> done) {
@@ -28,8 +31,8 @@ std::vector<SampleRange> ranges_outside(int spp, int per_item, std::vector<Sampl
   return out;
 }
 
-PartialFilm PartialFilm::from_mean(const Image& mean, uint32_t count) {
-  PartialFilm film(mean.width(), mean.height());
+PartialFilm PartialFilm::from_mean(const Image& mean, uint32_t count, PassSet passes) {
+  PartialFilm film(mean.width(), mean.height(), passes);
   const auto pixels = mean.data();
   for (size_t i = 0; i < film.sums_.size(); ++i) film.sums_[i] = double(pixels[i]) * count;
   std::fill(film.counts_.begin(), film.counts_.end(), count);
@@ -37,9 +40,10 @@ PartialFilm PartialFilm::from_mean(const Image& mean, uint32_t count) {
 }
 
 void PartialFilm::merge(const PartialFilm& other) {
-  if (other.width_ != width_ || other.height_ != height_)
-    throw Error(ErrorKind::InvalidArgument, "partial film: merging partials of different sizes");
+  if (other.width_ != width_ || other.height_ != height_ || other.passes_ != passes_)
+    throw Error(ErrorKind::InvalidArgument, "partial film: merging partials of different sizes or passes");
   for (size_t i = 0; i < sums_.size(); ++i) sums_[i] += other.sums_[i];
+  for (size_t i = 0; i < aux_.size(); ++i) aux_[i] += other.aux_[i];
   for (size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
 }
 
@@ -52,6 +56,19 @@ Image PartialFilm::mean() const {
     for (size_t c = 0; c < 3; ++c) out[p * 3 + c] = float(sums_[p * 3 + c] * inv);
   }
   return image;
+}
+
+void PartialFilm::set_mean(AuxPass p, const Image& mean) {
+  if (!passes_.has(p) || mean.width() != width_ || mean.height() != height_)
+    throw Error(ErrorKind::InvalidArgument, "partial film: the pass does not match the film");
+  for (size_t i = 0; i < counts_.size(); ++i)
+    aux_sums(p, passes_, mean.at(int(i % size_t(width_)), int(i / size_t(width_))), counts_[i],
+             &aux_[i * aux_channels()]);
+}
+
+Image PartialFilm::mean(AuxPass p) const {
+  if (!passes_.has(p)) throw Error(ErrorKind::InvalidArgument, "partial film: no such pass");
+  return aux_image(p, passes_, width_, height_, aux_, counts_);
 }
 
 }  // namespace lp::render

@@ -2,11 +2,13 @@
 // The samples of a range [first, end) of a render's per-pixel sample indices: per pixel the linear RGB sum
 // and the count of samples, never tone mapped. Partials of disjoint ranges merge exactly (sum of sums, sum
 // of counts, in double), so merging the ranges of a render in any order gives the image one process
-// renders, within float rounding. A render split over machines sends these.
+// renders, within float rounding. A render split over machines sends these. The auxiliary passes of the
+// render (scene_desc.hpp, AuxPass) travel beside the colour, summed and merged alike.
 #include <cstdint>
 #include <vector>
 
 #include "engine/image/image.hpp"
+#include "engine/render/scene_desc.hpp"
 
 namespace lp::render {
 
@@ -23,17 +25,20 @@ std::vector<SampleRange> ranges_outside(int spp, int per_item, std::vector<Sampl
 class PartialFilm {
  public:
   PartialFilm() = default;
-  PartialFilm(int width, int height);
-  // The film of `count` samples per pixel whose mean is `mean` (a render continued from its image).
-  static PartialFilm from_mean(const Image& mean, uint32_t count);
+  PartialFilm(int width, int height, PassSet passes = {});
+  // The film of `count` samples per pixel whose mean is `mean` (a render continued from its image), with
+  // room for `passes` (set_mean).
+  static PartialFilm from_mean(const Image& mean, uint32_t count, PassSet passes = {});
   // The bytes a partial of width x height pixels holds.
-  static int64_t memory_bytes(int64_t width, int64_t height) {
-    return width * height * int64_t(3 * sizeof(double) + sizeof(uint32_t));
+  static int64_t memory_bytes(int64_t width, int64_t height, const PassSet& passes = {}) {
+    return width * height * int64_t((3 + size_t(passes.channels())) * sizeof(double) + sizeof(uint32_t));
   }
 
   int width() const { return width_; }
   int height() const { return height_; }
   size_t pixel_count() const { return counts_.size(); }
+  const PassSet& passes() const { return passes_; }
+  size_t aux_channels() const { return size_t(passes_.channels()); }
 
   // The sum of `count` samples of pixel (x, y), added to what the pixel holds.
   void add(int x, int y, Rgb sum, uint32_t count) { add(size_t(y) * size_t(width_) + size_t(x), sum, count); }
@@ -42,6 +47,15 @@ class PartialFilm {
     s[0] += sum.x, s[1] += sum.y, s[2] += sum.z;
     counts_[pixel] += count;
   }
+  // The same with the sums of the auxiliary channels (aux_channels() of them).
+  void add(size_t pixel, Rgb sum, uint32_t count, const float* aux) {
+    add(pixel, sum, count);
+    double* a = &aux_[pixel * aux_channels()];
+    for (size_t c = 0; c < aux_channels(); ++c) a[c] += aux[c];
+  }
+  // Sets auxiliary pass p (which the film holds) to `mean` over each pixel's count (a render continued
+  // from its images).
+  void set_mean(AuxPass p, const Image& mean);
   // Adds another partial of the same size (throws lp::Error InvalidArgument otherwise).
   void merge(const PartialFilm& other);
 
@@ -49,13 +63,16 @@ class PartialFilm {
     return {float(sums_[pixel * 3]), float(sums_[pixel * 3 + 1]), float(sums_[pixel * 3 + 2])};
   }
   const double* sums() const { return sums_.data(); }
+  const double* aux(size_t pixel) const { return &aux_[pixel * aux_channels()]; }
   uint32_t count(size_t pixel) const { return counts_[pixel]; }
   // The mean of every pixel (black where no sample arrived yet).
   Image mean() const;
+  Image mean(AuxPass p) const;
 
  private:
   int width_ = 0, height_ = 0;
-  std::vector<double> sums_;
+  PassSet passes_;
+  std::vector<double> sums_, aux_;
   std::vector<uint32_t> counts_;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // The bytes of a range's partial film, as a worker sends it: "LPPF", a version, the size, the sample
-// range, the rays traced, then per pixel three float sums and a sample count (little endian). A range's
+// range, the auxiliary passes it holds (bits of 1 << AuxPass), the rays traced, then per pixel three
+// float sums, the auxiliary channels' float sums and a sample count (little endian). A range's
 // sums were added in float by the renderer, so float holds them exactly; merging goes to double.
 #include <cstdint>
 #include <span>

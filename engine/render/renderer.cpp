@@ -17,6 +17,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/adaptive_allocation.hpp"
+#include "engine/render/aux_passes.hpp"
 #include "engine/render/camera.hpp"
 #include "engine/render/directional_lights.hpp"
 #include "engine/render/embree_scene.hpp"
@@ -38,6 +39,12 @@ inline constexpr int kPacket = EmbreeScene::kPacket;
 struct SampleRun {
   uint32_t first = 0, n = 0;
 };
+
+std::vector<bool> shadow_catchers(const SceneDesc& scene) {
+  std::vector<bool> out;
+  for (const SceneObject& o : scene.objects) out.push_back(o.ground && o.ground->shadow_catcher);
+  return out;
+}
 
 std::vector<std::unique_ptr<Bsdf>> make_bsdfs(const SceneDesc& scene) {
   std::vector<std::unique_ptr<Bsdf>> out;
@@ -99,10 +106,11 @@ struct Renderer::Impl {
         lights(uses_lights(lighting.mode) ? median_cut_lights(env, lighting.lights)
                                           : std::vector<DirectionalLight>{}),
         geometry(scene, s.mesh_limits),
-        integrator(geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
-                   {lighting.mode, s.max_depth, lighting.visible, sample_spread(camera.pixel_spread(), s.spp),
-                    s.mipmaps, s.normal_maps, s.texture_anisotropy}),
-        film(s.width, s.height),
+        integrator(
+            geometry, bsdfs, env, sun ? &*sun : nullptr, lights,
+            {lighting.mode, s.max_depth, lighting.visible, sample_spread(camera.pixel_spread(), s.spp),
+             s.mipmaps, s.normal_maps, s.texture_anisotropy, s.background, s.clamp, shadow_catchers(scene)}),
+        film(s.width, s.height, s.passes),
         tiles_x((s.width + kTileSize - 1) / kTileSize),
         tiles_y((s.height + kTileSize - 1) / kTileSize) {}
 
@@ -112,12 +120,12 @@ struct Renderer::Impl {
 
   // Renders the samples of every pixel of the tile: pixel (x, y) draws `runs(x, y).n` samples from
   // index `runs(x, y).first`, and hands their sum and the sum of their squared channels to
-  // `store(x, y, sum, squares)`. Camera rays are traced kPacket at a time, filled in order from the
-  // samples of a run of kPacket pixels of a row: sample i of each pixel that draws it, then sample
-  // i + 1, so a pass with the same counts everywhere traces one sample index of the run per packet,
-  // and an adaptive pass, whose counts differ, still fills every packet but the run's last. Which rays
-  // share a packet depends only on the tile and the counts, so a pass, a range of samples or another
-  // thread count traces every ray alike. Each pixel adds its samples in index order.
+  // `store(x, y, sum, squares, rays, aux)` (aux: the sums of the auxiliary channels). Camera rays are traced
+  // kPacket at a time, filled in order from the samples of a run of kPacket pixels of a row: sample i of each
+  // pixel that draws it, then sample i + 1, so a pass with the same counts everywhere traces one sample index
+  // of the run per packet, and an adaptive pass, whose counts differ, still fills every packet but the run's
+  // last. Which rays share a packet depends only on the tile and the counts, so a pass, a range of samples or
+  // another thread count traces every ray alike. Each pixel adds its samples in index order.
   template <class Runs, class Store>
   void render_tile(int tile, Runs&& runs_of, Store&& store) {
     const FlushDenormals ftz;
@@ -136,19 +144,23 @@ struct Renderer::Impl {
         }
         Rgb sums[kPacket] = {};
         float squares[kPacket] = {};
+        float aux[kPacket][kMaxAuxChannels] = {};
         uint32_t pixel_rays[kPacket] = {};
         int lanes[kPacket], queued = 0;
         uint32_t indices[kPacket];
+        const int aux_channels = settings.passes.channels();
         const auto flush = [&] {
-          Rgb l[kPacket];
+          PathSample l[kPacket];
           uint64_t lane_rays[kPacket] = {};
           trace_packet(xs, y, {lanes, size_t(queued)}, indices, l, lane_rays);
           for (int a = 0; a < queued; ++a) {
             tile_rays += lane_rays[a];
             pixel_rays[lanes[a]] += uint32_t(lane_rays[a]);
-            if (!finite(l[a])) continue;  // a numerical failure must not poison the image
-            sums[lanes[a]] += l[a];
-            squares[lanes[a]] += l[a].x * l[a].x + l[a].y * l[a].y + l[a].z * l[a].z;
+            if (aux_channels > 0) add_aux(l[a], aux[lanes[a]]);
+            const Rgb c = l[a].color;
+            if (!finite(c)) continue;  // a numerical failure must not poison the image
+            sums[lanes[a]] += c;
+            squares[lanes[a]] += c.x * c.x + c.y * c.y + c.z * c.z;
           }
           queued = 0;
         };
@@ -159,16 +171,26 @@ struct Renderer::Impl {
             if (queued == kPacket) flush();
           }
         if (queued > 0) flush();
-        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k], squares[k], pixel_rays[k]);
+        for (int k = 0; k < n; ++k) store(xs + k, y, sums[k], squares[k], pixel_rays[k], aux[k]);
       }
     }
     samples.fetch_add(tile_samples, std::memory_order_relaxed);
     rays.fetch_add(tile_rays, std::memory_order_relaxed);
   }
 
-  // Sample indices[a] of pixel (x + lanes[a], y) for each lane a, its radiance into out[a]; a pixel
-  // may fill several lanes.
-  void trace_packet(int x, int y, std::span<const int> lanes, const uint32_t* indices, Rgb* out,
+  // Adds a sample's auxiliary values to a pixel's sums, unless one is not finite.
+  void add_aux(const PathSample& sample, float* sums) const {
+    float v[kMaxAuxChannels];
+    const int n = settings.passes.channels();
+    aux_values(sample, settings.passes, v);
+    for (int c = 0; c < n; ++c)
+      if (!std::isfinite(v[c])) return;
+    for (int c = 0; c < n; ++c) sums[c] += v[c];
+  }
+
+  // Sample indices[a] of pixel (x + lanes[a], y) for each lane a, its radiance and passes into out[a];
+  // a pixel may fill several lanes.
+  void trace_packet(int x, int y, std::span<const int> lanes, const uint32_t* indices, PathSample* out,
                     uint64_t* lane_rays) const {
     std::optional<PathSampler> samplers[kPacket];
     Ray camera_rays[kPacket];
@@ -190,8 +212,9 @@ struct Renderer::Impl {
   template <class Runs>
   bool render_into_film(const std::atomic<bool>& cancel, const std::function<void()>& on_tile,
                         const Runs& runs) {
-    const auto store = [this](int x, int y, Rgb sum, float squares, uint32_t traced) {
+    const auto store = [this](int x, int y, Rgb sum, float squares, uint32_t traced, const float* aux) {
       film.set_pass_sum(x, y, sum, squares, traced);
+      if (!settings.passes.empty()) film.set_pass_aux(x, y, aux);
     };
     return for_each_tile(tiles_x * tiles_y, cancel, on_tile, [&](int t) { render_tile(t, runs, store); });
   }
@@ -217,7 +240,8 @@ Renderer::Renderer(const SceneDesc& scene, const Lighting& lighting, const Rende
   lighting.validate("lighting");
   settings.validate("settings");
   SceneDesc resolved = scene;
-  if (scene.camera.fit || scene.camera.gltf) load_missing_models(resolved, settings.mesh_limits);
+  if (needs_models(scene)) load_missing_models(resolved, settings.mesh_limits);
+  resolve_grounds(resolved);
   resolved.camera = resolve_camera(resolved, float(settings.width) / float(settings.height));
   resolved.camera.validate("scene.camera");
   impl_ = std::make_unique<Impl>(resolved, lighting, settings, std::move(envmap));
@@ -275,10 +299,11 @@ std::optional<RangePartial> Renderer::render_range(SampleRange range, const std:
                                                    const std::function<void()>& on_tile) {
   if (range.end <= range.first) throw Error(ErrorKind::InvalidArgument, "render_range: an empty range");
   const uint64_t rays_before = impl_->rays.load();
-  RangePartial out{range, 0, PartialFilm(impl_->settings.width, impl_->settings.height)};
+  const RenderSettings& s = impl_->settings;
+  RangePartial out{range, 0, PartialFilm(s.width, s.height, s.passes)};
   const auto runs = [range](int, int) { return SampleRun{range.first, uint32_t(range.count())}; };
-  const auto store = [&out, range](int x, int y, Rgb sum, float, uint32_t) {
-    out.film.add(x, y, sum, uint32_t(range.count()));
+  const auto store = [&out, range, &s](int x, int y, Rgb sum, float, uint32_t, const float* aux) {
+    out.film.add(size_t(y) * size_t(s.width) + size_t(x), sum, uint32_t(range.count()), aux);
   };
   const bool finished =
       for_each_tile(tile_count(), cancel, on_tile, [&](int t) { impl_->render_tile(t, runs, store); });
@@ -297,6 +322,14 @@ int Renderer::spp_done() const {
 
 Image Renderer::image() const {
   return impl_->film.mean();
+}
+
+Image Renderer::image(AuxPass pass) const {
+  return impl_->film.mean(pass);
+}
+
+void Renderer::resume(AuxPass pass, const Image& mean) {
+  impl_->film.restore(pass, mean);
 }
 
 RenderStats Renderer::stats() const {

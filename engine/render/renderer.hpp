@@ -61,9 +61,13 @@ class Renderer {
   // Continues an earlier run of the same scene and settings from its mean image over `spp` samples
   // per pixel: later passes draw the samples that run would have drawn next. Call before any pass.
   void resume(const Image& mean, int spp);
+  // The same for an auxiliary pass the settings ask for, after resume() of the colour.
+  void resume(AuxPass pass, const Image& mean);
 
   int spp_done() const;  // samples per pixel so far (their mean, rounded down, after adaptive passes)
   Image image() const;   // mean of the finished passes (linear radiance)
+  // The mean of an auxiliary pass the settings ask for (aux_passes.hpp: alpha and depth as greys).
+  Image image(AuxPass pass) const;
   RenderStats stats() const;
 
  private:

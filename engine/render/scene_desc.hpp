@@ -72,9 +72,21 @@ struct MeshObject {
   std::optional<UpAxis> up_axis;
   void validate(const std::string& prefix) const;
 };
+// A horizontal ground: a plane facing +z at `height`, or, when none is given, at the lowest z of the
+// scene's bounded objects (resolve_ground, once the models are loaded). A shadow catcher is invisible to
+// the camera: where the camera sees it, it shows what lies behind it (the background) darkened by the
+// shadows the other objects cast on it, and its alpha is that shadow's opacity. Rays that have bounced
+// see it as a surface of its material.
+struct Ground {
+  std::optional<float> height;
+  bool shadow_catcher = false;
+};
+
 struct SceneObject {
   std::variant<SphereObject, PlaneObject, MeshObject> shape;
   Material material;
+  // Set for a ground, whose shape is then a PlaneObject with normal +z.
+  std::optional<Ground> ground{};
   void validate(const std::string& prefix) const;
 };
 
@@ -162,6 +174,79 @@ constexpr auto enum_entries(SamplingMode) {
       {{SamplingMode::Uniform, "uniform"}, {SamplingMode::Adaptive, "adaptive"}});
 }
 
+// What escaping camera rays see: the map (as Lighting::visible says), nothing (black, alpha 0), or a
+// colour. The map lights the scene in every case.
+enum class BackgroundMode { Map, Transparent, Color };
+constexpr auto enum_entries(BackgroundMode) {
+  return std::to_array<EnumEntry<BackgroundMode>>({{BackgroundMode::Map, "map"},
+                                                   {BackgroundMode::Transparent, "transparent"},
+                                                   {BackgroundMode::Color, "color"}});
+}
+struct Background {
+  BackgroundMode mode = BackgroundMode::Map;
+  Rgb color{};  // linear, with mode Color
+  bool operator==(const Background&) const = default;
+};
+
+// The passes a render accumulates beside its colour, with the same samples (film.hpp):
+//   albedo: the directional albedo of the first hit with a non-delta lobe (the weight f cos / pdf of its
+//           BSDF sample, whose mean is that albedo; through mirrors and smooth glass, times their
+//           colour); 0 where the camera ray escapes;
+//   normal: the world shading normal at the first hit (facing the camera); 0 where it escapes;
+//   depth:  the distance from the camera to the first hit, the mean over the samples that hit; +inf
+//           where no sample hit;
+//   alpha:  the coverage of camera rays: 1 for a hit, 0 for an escape, a shadow catcher's shadow
+//           opacity where the camera sees the catcher.
+enum class AuxPass { Albedo, Normal, Depth, Alpha };
+constexpr auto enum_entries(AuxPass) {
+  return std::to_array<EnumEntry<AuxPass>>({{AuxPass::Albedo, "albedo"},
+                                            {AuxPass::Normal, "normal"},
+                                            {AuxPass::Depth, "depth"},
+                                            {AuxPass::Alpha, "alpha"}});
+}
+// A set of AuxPass, and where each pass's channels lie among the film's auxiliary channels.
+class PassSet {
+ public:
+  PassSet() = default;
+  PassSet(std::initializer_list<AuxPass> passes) {
+    for (AuxPass p : passes) add(p);
+  }
+  void add(AuxPass p) { bits_ |= 1u << unsigned(p); }
+  bool has(AuxPass p) const { return bits_ & (1u << unsigned(p)); }
+  bool empty() const { return bits_ == 0; }
+  // The passes of the set, in the order of AuxPass.
+  std::vector<AuxPass> list() const {
+    std::vector<AuxPass> out;
+    for (const auto& e : enum_entries(AuxPass{}))
+      if (has(e.value)) out.push_back(e.value);
+    return out;
+  }
+  // The channels a pass holds in the film: 3 (albedo, normal), 2 (depth: the sum of distances and the
+  // count of hits) or 1 (alpha).
+  static int channels(AuxPass p) { return p == AuxPass::Depth ? 2 : p == AuxPass::Alpha ? 1 : 3; }
+  int channels() const { return offset(AuxPass(kCount)); }
+  // The first channel of pass p (which the set holds).
+  int offset(AuxPass p) const {
+    int at = 0;
+    for (unsigned q = 0; q < unsigned(p); ++q)
+      if (has(AuxPass(q))) at += channels(AuxPass(q));
+    return at;
+  }
+  bool operator==(const PassSet&) const = default;
+  // The set as bits (1 << AuxPass), as a partial film's bytes carry it; nullopt for unknown bits.
+  unsigned bits() const { return bits_; }
+  static std::optional<PassSet> from_bits(unsigned bits) {
+    if (bits >> kCount) return std::nullopt;
+    PassSet s;
+    s.bits_ = bits;
+    return s;
+  }
+
+ private:
+  static constexpr unsigned kCount = 4;
+  unsigned bits_ = 0;
+};
+
 struct RenderSettings {
   int width = 256, height = 256;
   int spp = 64;  // samples per pixel; their mean over the pixels with adaptive sampling
@@ -171,6 +256,12 @@ struct RenderSettings {
   MeshLimits mesh_limits;
   bool mipmaps = true;      // texture and map levels chosen by ray cones (else level 0 everywhere)
   bool normal_maps = true;  // tangent-space normal maps perturb the shading normal
+  Background background;
+  // A bound on the radiance of each indirect contribution (light that reached the first hit over at
+  // least one more surface): one above it is scaled so its largest channel is the bound. Cycles'
+  // "clamp indirect"; off when absent.
+  std::optional<float> clamp;
+  PassSet passes;
   // The longest texture footprint over its width before it is widened (1: isotropic levels, as wide
   // as the footprint is long). Not a request field: the engine's tests compare filters with it.
   float texture_anisotropy = kMaxTextureAnisotropy;

@@ -1,6 +1,8 @@
 // The validate() of the scene, lighting and settings structs (scene_desc.hpp).
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "engine/core/validate.hpp"
 #include "engine/render/scene_desc.hpp"
 
@@ -54,6 +56,7 @@ void MeshObject::validate(const std::string& prefix) const {
 void SceneObject::validate(const std::string& prefix) const {
   std::visit([&](const auto& s) { s.validate(prefix); }, shape);
   std::visit([&](const auto& m) { m.validate(field_path(prefix, "material")); }, material);
+  if (ground && ground->height) require_in(field_path(prefix, "height"), *ground->height, kCoordinate);
 }
 
 void Camera::validate(const std::string& prefix) const {
@@ -112,6 +115,13 @@ void RenderSettings::validate(const std::string& prefix) const {
   require(height >= 1, field_path(prefix, "height"), fmt::format("must be at least 1, got {}", height));
   require(spp >= 1, field_path(prefix, "spp"), fmt::format("must be at least 1, got {}", spp));
   require_in(field_path(prefix, "max_depth"), max_depth, kMaxDepth);
+  if (background.mode == BackgroundMode::Color)
+    for (const float c : {background.color.x, background.color.y, background.color.z})
+      require(std::isfinite(c) && c >= 0, field_path(prefix, "background"),
+              fmt::format("a colour's channels must be finite and at least 0, got {}", c));
+  if (clamp)
+    require(std::isfinite(*clamp) && *clamp > 0, field_path(prefix, "clamp"),
+            fmt::format("must be a finite number above 0, got {}", *clamp));
   require(texture_anisotropy >= 1, field_path(prefix, "texture_anisotropy"),
           fmt::format("must be at least 1, got {}", texture_anisotropy));
 }

@@ -182,6 +182,26 @@ SceneView resolve_view(const SceneDesc& scene, float aspect) {
   return view;
 }
 
+void resolve_grounds(SceneDesc& scene) {
+  std::optional<float> lowest;
+  for (SceneObject& o : scene.objects) {
+    if (!o.ground) continue;
+    if (!o.ground->height && !lowest) {
+      Bounds all;
+      for (const SceneObject& other : scene.objects)
+        if (!std::holds_alternative<PlaneObject>(other.shape)) all.extend(object_bounds(other));
+      lowest = all.empty() ? 0.0f : all.min.z;
+    }
+    o.shape = PlaneObject{{0, 0, o.ground->height.value_or(*lowest)}, {0, 0, 1}};
+  }
+}
+
+bool needs_models(const SceneDesc& scene) {
+  return scene.camera.fit || scene.camera.gltf ||
+         std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [](const SceneObject& o) { return o.ground && !o.ground->height; });
+}
+
 void load_missing_models(SceneDesc& scene, const MeshLimits& limits) {
   for (SceneObject& o : scene.objects) {
     auto* mesh = std::get_if<MeshObject>(&o.shape);

@@ -38,6 +38,13 @@ Camera resolve_camera(const SceneDesc& scene, float aspect);
 // The camera and the view's warnings (which read every mesh's placed vertices); throws as resolve_camera.
 SceneView resolve_view(const SceneDesc& scene, float aspect);
 
+// Places every ground (SceneObject::ground) as its plane: at its height, or at the lowest z of the bounded
+// objects' world bounds (0 when nothing is bounded). The models of mesh objects must be loaded for a
+// ground without a height (needs_models).
+void resolve_grounds(SceneDesc& scene);
+// Whether resolve_camera or resolve_grounds reads the scene's models.
+bool needs_models(const SceneDesc& scene);
+
 // Models of mesh objects not yet loaded, loaded (what resolve_view needs when the scene names files).
 void load_missing_models(SceneDesc& scene, const MeshLimits& limits);
 

@@ -5,11 +5,10 @@
 namespace lp::server {
 
 QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest request,
-                          std::shared_ptr<const EnvMap> envmap, int64_t triangles,
-                          std::shared_ptr<const Image> image, const RenderJob* replaced) {
+                          std::shared_ptr<const EnvMap> envmap, int64_t triangles, RenderImage image,
+                          const RenderJob* replaced) {
   const auto& s = request.settings;
-  RenderJobContext context{app.state.get(), &app.render_counters,
-                           reserve_render(app.memory, s.width, s.height, triangles),
+  RenderJobContext context{app.state.get(), &app.render_counters, reserve_render(app.memory, s, triangles),
                            scale_out(app.options.scale_out, app.bundles, app.scale_out_counters)};
   auto job = std::make_shared<RenderJob>(std::move(record), std::move(request), std::move(envmap),
                                          std::move(image), std::move(context));

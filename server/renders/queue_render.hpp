@@ -17,11 +17,11 @@ struct QueuedRender {
 // server's context (state store, counters, scale-out) and writes its record before a runner can pick it
 // up (throws api::ApiError 507 insufficient_storage or 500 write_failed, queuing nothing, when the record
 // cannot be written). `image` continues an interrupted render: its mean over record.spp_done samples per
-// pixel, and `replaced` the interrupted job the new one replaces under the same id. When the queue is full,
-// the stored record is put back as it was: removed for a new render, `replaced`'s again for a continuation
-// (unless another continuation took its place meanwhile).
+// pixel and its passes, and `replaced` the interrupted job the new one replaces under the same id. When the
+// queue is full, the stored record is put back as it was: removed for a new render, `replaced`'s again for a
+// continuation (unless another continuation took its place meanwhile).
 QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest request,
-                          std::shared_ptr<const EnvMap> envmap, int64_t triangles,
-                          std::shared_ptr<const Image> image = nullptr, const RenderJob* replaced = nullptr);
+                          std::shared_ptr<const EnvMap> envmap, int64_t triangles, RenderImage image = {},
+                          const RenderJob* replaced = nullptr);
 
 }  // namespace lp::server

@@ -10,8 +10,8 @@
 
 namespace lp::server {
 
-RenderFiles::RenderFiles(StateStore* store, std::string id, std::string image_file)
-    : store_(store), id_(std::move(id)), image_file_(std::move(image_file)) {}
+RenderFiles::RenderFiles(StateStore* store, std::string id, std::string image_file, render::PassSet passes)
+    : store_(store), id_(std::move(id)), image_file_(std::move(image_file)), image_passes_(passes) {}
 
 std::string RenderFiles::image_file() const {
   std::lock_guard lock(mutex_);
@@ -44,21 +44,51 @@ void RenderFiles::keep_record(const RenderRecord& record) const {
   }
 }
 
-bool RenderFiles::save_image(const Image& image, int spp_done, RenderRecord record) {
+std::string RenderFiles::pass_file(const std::string& image_file, render::AuxPass pass) {
+  const std::string stem = image_file.substr(0, image_file.rfind('.'));
+  return fmt::format("{}.{}.exr", stem, enum_name(pass));
+}
+
+std::string RenderFiles::image_file_of(const std::string& file) {
+  for (const auto& e : enum_entries(render::AuxPass{})) {
+    const std::string suffix = fmt::format(".{}.exr", e.name);
+    if (file.size() > suffix.size() && file.ends_with(suffix))
+      return file.substr(0, file.size() - suffix.size()) + ".exr";
+  }
+  return file;
+}
+
+void RenderFiles::remove_image(const std::string& image_file, const render::PassSet& passes) const {
+  store_->remove(store_->renders_dir() / image_file);
+  for (const auto p : passes.list()) store_->remove(store_->renders_dir() / pass_file(image_file, p));
+}
+
+bool RenderFiles::save_image(const RenderImage& image, RenderRecord record) {
   if (!store_) return false;
-  const std::string file = fmt::format("{}.{}.exr", id_, spp_done);
-  const std::vector<uint8_t> bytes = write_exr(image, ExrCompression::None);  // encoded without the lock
+  const std::string file = fmt::format("{}.{}.exr", id_, image.spp_done);
+  // Encoded without the lock: the colour, then each pass.
+  std::vector<std::pair<std::string, std::vector<uint8_t>>> files;
+  files.emplace_back(file, write_exr(*image.image, ExrCompression::None));
+  render::PassSet passes;
+  for (const auto& e : enum_entries(render::AuxPass{}))
+    if (const Image* pass = image.pass(e.value)) {
+      files.emplace_back(pass_file(file, e.value), write_exr(*pass, ExrCompression::None));
+      passes.add(e.value);
+    }
   std::lock_guard lock(mutex_);
   if (removed_) return false;
   try {
-    store_->write_bytes(store_->renders_dir() / file, bytes);
+    // The passes first: the colour image's file, once written, says the set is whole.
+    for (size_t i = files.size(); i-- > 0;)
+      store_->write_bytes(store_->renders_dir() / files[i].first, files[i].second);
   } catch (const StorageError& e) {
     throw storage_refusal(e, "the image of render " + id_);
   }
   const std::string previous = std::exchange(image_file_, file);
+  const render::PassSet previous_passes = std::exchange(image_passes_, passes);
   record.image_file = file;
   write_record(record);
-  if (!previous.empty() && previous != file) store_->remove(store_->renders_dir() / previous);
+  if (!previous.empty() && previous != file) remove_image(previous, previous_passes);
   return true;
 }
 
@@ -67,23 +97,28 @@ void RenderFiles::remove() {
   std::lock_guard lock(mutex_);
   removed_ = true;
   store_->remove(store_->renders_dir() / (id_ + ".json"));
-  if (!image_file_.empty()) store_->remove(store_->renders_dir() / image_file_);
+  if (!image_file_.empty()) remove_image(image_file_, image_passes_);
 }
 
-std::shared_ptr<const Image> RenderFiles::read_image(const StateStore& store, const RenderRecord& record,
-                                                     const api::RenderRequest& request) {
-  if (record.image_file.empty()) return nullptr;
+RenderImage RenderFiles::read_image(const StateStore& store, const RenderRecord& record,
+                                    const api::RenderRequest& request) {
+  if (record.image_file.empty()) return {};
   const auto& s = request.settings;
-  try {
+  const auto read = [&](const std::string& file) {
     ImageLimits limits;
     limits.max_pixels = int64_t{s.width} * s.height;
-    auto decoded = read_image_file(store.renders_dir() / record.image_file, limits);
+    auto decoded = read_image_file(store.renders_dir() / file, limits);
     if (decoded.image.width() != s.width || decoded.image.height() != s.height)
-      throw std::runtime_error("its size is not the render's");
+      throw std::runtime_error(file + ": its size is not the render's");
     return std::make_shared<const Image>(std::move(decoded.image));
+  };
+  try {
+    RenderImage out{read(record.image_file), record.spp_done, {}};
+    for (const auto p : s.passes.list()) out.passes[size_t(p)] = read(pass_file(record.image_file, p));
+    return out;
   } catch (const std::exception& e) {
     spdlog::warn("state: render {}: cannot use {}: {}", record.id, record.image_file, e.what());
-    return nullptr;
+    return {};
   }
 }
 

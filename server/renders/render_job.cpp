@@ -14,8 +14,20 @@
 
 namespace lp::server {
 
+namespace {
+
+// The images of the passes `passes` holds, each made by `mean(pass)`.
+template <class Mean>
+PassImages pass_images(const render::PassSet& passes, Mean&& mean) {
+  PassImages out;
+  for (const auto p : passes.list()) out[size_t(p)] = std::make_shared<const Image>(mean(p));
+  return out;
+}
+
+}  // namespace
+
 RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
-                     std::shared_ptr<const Image> image, RenderJobContext context)
+                     RenderImage image, RenderJobContext context)
     : Job(record.id, record.created, record.elapsed_s),
       request_(std::move(request)),
       request_json_(std::move(record.request)),
@@ -24,7 +36,8 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       scale_out_(std::move(context.scale_out)),
       earlier_stats_(record.stats),
       earlier_render_s_(record.render_s),
-      image_(std::move(image)),
+      image_(std::move(image.image)),
+      passes_(std::move(image.passes)),
       spp_done_(image_ ? record.spp_done : 0),
       ranges_done_(image_ ? record.ranges_done : std::vector<render::SampleRange>{}),
       stats_(record.stats),
@@ -32,13 +45,13 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       envmap_fingerprint_(record.envmap_fingerprint),
       model_hashes_(record.model_hashes),
       memory_(std::move(context.memory)),
-      files_(context.store, record.id, image_ ? record.image_file : "") {
+      files_(context.store, record.id, image_ ? record.image_file : "", request_.settings.passes) {
   set_work(request_.settings.spp, spp_done_);  // until run() counts in tiles
 }
 
 RenderImage RenderJob::image() const {
   std::lock_guard lock(mutex_);
-  return {image_, spp_done_};
+  return {image_, spp_done_, passes_};
 }
 
 int RenderJob::spp_done() const {
@@ -48,7 +61,10 @@ int RenderJob::spp_done() const {
 
 int64_t RenderJob::retained_bytes() const {
   std::lock_guard lock(mutex_);
-  return image_ ? int64_t(image_->data().size_bytes()) : 0;
+  int64_t bytes = image_ ? int64_t(image_->data().size_bytes()) : 0;
+  for (const auto& pass : passes_)
+    if (pass) bytes += int64_t(pass->data().size_bytes());
+  return bytes;
 }
 
 void RenderJob::keep_result_memory() {
@@ -79,14 +95,15 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   return r;
 }
 
-void RenderJob::publish(Image pixels, int spp_done, render::RenderStats stats, double render_s,
-                        std::vector<render::SampleRange> ranges_done) {
+void RenderJob::publish(Image pixels, PassImages passes, int spp_done, render::RenderStats stats,
+                        double render_s, std::vector<render::SampleRange> ranges_done) {
   auto image = std::make_shared<const Image>(std::move(pixels));
   std::lock_guard lock(mutex_);
   if (counters_)
     counters_->add(earlier_stats_.samples + stats.samples - stats_.samples,
                    earlier_stats_.rays + stats.rays - stats_.rays, earlier_render_s_ + render_s - render_s_);
   image_ = std::move(image);
+  passes_ = std::move(passes);
   spp_done_ = spp_done;
   ranges_done_ = std::move(ranges_done);
   stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};
@@ -99,7 +116,7 @@ void RenderJob::checkpoint() {
   RenderRecord kept = record();
   kept.envmap_fingerprint = envmap_content_hash(*envmap_);
   kept.model_hashes = run_model_hashes_;
-  if (!files_.save_image(*current.image, current.spp_done, kept)) return;
+  if (!files_.save_image(current, kept)) return;
   std::lock_guard lock(mutex_);
   envmap_fingerprint_ = kept.envmap_fingerprint;
   model_hashes_ = kept.model_hashes;
@@ -161,7 +178,9 @@ bool RenderJob::render_here() {
   auto passes = render::render_passes(s);
   const int earlier_spp = skip_done_passes(passes);
   if (earlier_spp > 0) {
-    renderer.resume(*image().image, earlier_spp);
+    const RenderImage earlier = image();
+    renderer.resume(*earlier.image, earlier_spp);
+    for (const auto p : s.passes.list()) renderer.resume(p, *earlier.passes[size_t(p)]);
     spdlog::info("render {} continues after {} spp", id(), earlier_spp);
   }
   const int64_t tiles = renderer.tile_count();
@@ -173,8 +192,8 @@ bool RenderJob::render_here() {
     const auto on_tile = [this, spp = pass.spp] { add_work_done(spp); };
     if (interrupt_requested() || !renderer.render(pass, cancel_flag(), on_tile)) return false;
     spp_done += pass.spp;
-    publish(renderer.image(), spp_done, renderer.stats(),
-            std::chrono::duration<double>(Clock::now() - start).count());
+    publish(renderer.image(), pass_images(s.passes, [&](render::AuxPass p) { return renderer.image(p); }),
+            spp_done, renderer.stats(), std::chrono::duration<double>(Clock::now() - start).count());
     checkpoint();
   }
   return true;
@@ -188,9 +207,12 @@ std::vector<render::SampleRange> RenderJob::done_ranges() const {
 }
 
 render::PartialFilm RenderJob::done_film() const {
+  const auto& s = request_.settings;
   const RenderImage done = image();
-  if (!done.image) return render::PartialFilm(request_.settings.width, request_.settings.height);
-  return render::PartialFilm::from_mean(*done.image, uint32_t(done.spp_done));
+  if (!done.image) return render::PartialFilm(s.width, s.height, s.passes);
+  render::PartialFilm film = render::PartialFilm::from_mean(*done.image, uint32_t(done.spp_done), s.passes);
+  for (const auto p : s.passes.list()) film.set_mean(p, *done.passes[size_t(p)]);
+  return film;
 }
 
 struct RenderJob::RangeRun {
@@ -210,8 +232,8 @@ void RenderJob::merged(RangeRun& run, const render::PartialFilm& film, render::S
   run.stats.samples += uint64_t(range.count()) * film.pixel_count();
   run.stats.rays += rays;
   const auto now = RangeRun::Clock::now();
-  publish(film.mean(), run.spp_done, run.stats, std::chrono::duration<double>(now - run.start).count(),
-          run.ranges);
+  publish(film.mean(), pass_images(film.passes(), [&](render::AuxPass p) { return film.mean(p); }),
+          run.spp_done, run.stats, std::chrono::duration<double>(now - run.start).count(), run.ranges);
   if (now - run.kept < kKeepEvery) return;
   checkpoint();
   run.kept = now;

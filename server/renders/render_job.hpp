@@ -5,6 +5,7 @@
 // with a state store the job keeps its record and image there after every pass, so a restart can continue it.
 // Split over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
 // the image as each range is merged and keeps it every few seconds.
+#include <array>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -17,16 +18,12 @@
 #include "server/jobs/job.hpp"
 #include "server/renders/render_counters.hpp"
 #include "server/renders/render_files.hpp"
+#include "server/renders/render_job_image.hpp"
 #include "server/renders/render_record.hpp"
 #include "server/scale_out/scale_out.hpp"
 #include "server/storage/state_store.hpp"
 
 namespace lp::server {
-
-struct RenderImage {
-  std::shared_ptr<const Image> image;  // the mean of the finished passes; nullptr before the first
-  int spp_done = 0;                    // samples per pixel in it
-};
 
 // What a render job works with beside its request.
 struct RenderJobContext {
@@ -39,10 +36,10 @@ struct RenderJobContext {
 class RenderJob : public Job {
  public:
   // `record` is a fresh one for a new render, or the record of an earlier run to continue (then `image`
-  // is its mean image over record.spp_done samples per pixel). `envmap` may be null for a job that has
-  // ended. The reservation shrinks to the kept image when the job ends.
+  // is its mean image over record.spp_done samples per pixel, with its passes). `envmap` may be null for a
+  // job that has ended. The reservation shrinks to the kept image when the job ends.
   RenderJob(RenderRecord record, api::RenderRequest request, std::shared_ptr<const EnvMap> envmap,
-            std::shared_ptr<const Image> image, RenderJobContext context);
+            RenderImage image, RenderJobContext context);
 
   RenderImage image() const;
   int spp_done() const;
@@ -77,7 +74,7 @@ class RenderJob : public Job {
   void merged(RangeRun& run, const render::PartialFilm& film, render::SampleRange range, uint64_t rays);
   // The image over `spp_done` samples per pixel (in `ranges_done` when they are not [0, spp_done)), and
   // what this run traced for it in `render_s`.
-  void publish(Image image, int spp_done, render::RenderStats run_stats, double render_s,
+  void publish(Image image, PassImages passes, int spp_done, render::RenderStats run_stats, double render_s,
                std::vector<render::SampleRange> ranges_done = {});
   void checkpoint();
   void keep_result_memory();  // the image of the passes done, then the record naming it
@@ -93,6 +90,7 @@ class RenderJob : public Job {
 
   mutable std::mutex mutex_;
   std::shared_ptr<const Image> image_;
+  PassImages passes_;
   int spp_done_ = 0;
   std::vector<render::SampleRange> ranges_done_;  // see RenderRecord::ranges_done
   render::RenderStats stats_;

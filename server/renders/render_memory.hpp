@@ -12,15 +12,21 @@
 
 namespace lp::server {
 
-inline int64_t running_render_bytes(int64_t width, int64_t height, int64_t triangles) {
-  return render::Film::memory_bytes(width, height) + 2 * EnvMap::image_bytes(width, height) +
-         encode_bytes(ImageFormat::Exr, width, height) + render::mesh_memory_bytes(triangles);
+// The images a render publishes: its colour and each auxiliary pass it asks for.
+inline int64_t rendered_image_bytes(const render::RenderSettings& s) {
+  return int64_t(1 + s.passes.list().size()) * EnvMap::image_bytes(s.width, s.height);
 }
 
-inline MemoryReservation reserve_render(const MemoryBudget& budget, int width, int height,
+inline int64_t running_render_bytes(const render::RenderSettings& s, int64_t triangles) {
+  const int64_t images = int64_t(1 + s.passes.list().size());
+  return render::Film::memory_bytes(s.width, s.height, s.passes) + 2 * rendered_image_bytes(s) +
+         images * encode_bytes(ImageFormat::Exr, s.width, s.height) + render::mesh_memory_bytes(triangles);
+}
+
+inline MemoryReservation reserve_render(const MemoryBudget& budget, const render::RenderSettings& s,
                                         int64_t triangles) {
-  return budget.reserve(running_render_bytes(width, height, triangles), MemoryUse::Transient,
-                        "a " + std::to_string(width) + "x" + std::to_string(height) + " render");
+  return budget.reserve(running_render_bytes(s, triangles), MemoryUse::Transient,
+                        "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " render");
 }
 
 }  // namespace lp::server

@@ -12,6 +12,7 @@
 #include "api/api_error.hpp"
 #include "server/maps/envmap_content_hash.hpp"
 #include "server/renders/model_hashes.hpp"
+#include "server/renders/render_memory.hpp"
 #include "server/renders/scene_meshes.hpp"
 
 namespace lp::server {
@@ -27,10 +28,10 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   // The image stays with the job, so it is held from the budget like a finished render's.
   MemoryReservation memory;
   if (!record.image_file.empty())
-    memory = app.memory.reserve(EnvMap::image_bytes(request.settings.width, request.settings.height),
-                                MemoryUse::Held, fmt::format("the image of render {}", record.id));
+    memory = app.memory.reserve(rendered_image_bytes(request.settings), MemoryUse::Held,
+                                fmt::format("the image of render {}", record.id));
   auto image = RenderFiles::read_image(*app.state, record, request);
-  if (!image) {
+  if (!image.image) {
     memory = {};
     if (status != JobStatus::Interrupted && record.spp_done > 0) {
       std::error_code ec;
@@ -60,10 +61,13 @@ void remove_unrecorded_files(const StateStore& store, const std::vector<RenderRe
     ids.insert(r.id);
     named.insert(r.image_file);
   }
+  const auto is_named = [&](const std::string& file) {
+    return named.contains(RenderFiles::image_file_of(file));
+  };
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(store.renders_dir(), ec)) {
     const fs::path& path = entry.path();
-    if (path.extension() == ".json" || named.contains(path.filename().string())) continue;
+    if (path.extension() == ".json" || is_named(path.filename().string())) continue;
     const std::string id = render_id_of(path);
     if (ids.contains(id) || !fs::exists(store.renders_dir() / (id + ".json"))) store.remove_leftover(path);
   }
@@ -171,8 +175,8 @@ QueuedRender resume_render(App& app, const std::shared_ptr<RenderJob>& job) {
         *job, api::ErrorCode::EnvmapChanged,
         fmt::format("the map '{}' loaded now is not the one it was rendering", request.envmap));
   if (record.spp_done > 0) check_models(*job, record.model_hashes, request.scene, names);
-  auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles,
-                             job->image().image, job.get());
+  auto queued = queue_render(app, std::move(record), std::move(request), envmap->map, triangles, job->image(),
+                             job.get());
   if (!queued.job) {
     if (app.renders.find(job->id()) != job)
       throw cannot_resume(*job, api::ErrorCode::NotInterrupted, "it was resumed already");

@@ -8,6 +8,7 @@
 
 #include "api/api_error.hpp"
 #include "api/preview_params.hpp"
+#include "api/render_image_pass.hpp"
 #include "api/render_request.hpp"
 #include "api/thumbnail_params.hpp"
 #include "engine/image/encode_memory.hpp"
@@ -17,6 +18,7 @@
 #include "server/renders/event_streams.hpp"
 #include "server/renders/queue_render.hpp"
 #include "server/renders/render_job.hpp"
+#include "server/renders/render_pictures.hpp"
 #include "server/renders/scene_meshes.hpp"
 #include "server/renders/stored_renders.hpp"
 #include "server/routes/job_answers.hpp"
@@ -82,20 +84,19 @@ void list(const App& app, httplib::Response& res) {
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
   const auto params = api::parse_preview_params(req.params, ImageFormat::Png, job->request().tone_mapping);
+  const auto pass = api::parse_render_image_pass(req.params);
   const RenderImage current = job->image();
   if (!current.image)
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
   const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
-  const std::optional<Image> resized =
-      size ? std::optional(fit_longest_side(*current.image, size)) : std::nullopt;
-  const Image& pixels = resized ? *resized : *current.image;
-  auto memory =
-      app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()), MemoryUse::Transient,
-                         std::string("encoding a render as ") + enum_name(params.format));
+  const RenderImage pictures = size ? fit_longest_side(current, size) : current;
+  const auto& settings = job->request().settings;
+  auto memory = app.memory.reserve(render_picture_bytes(pass, params, settings), MemoryUse::Transient,
+                                   std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  send_reserved(res, write_image(pixels, params.format, params.tone), format_mime_type(params.format),
+  send_reserved(res, encode_render_picture(pictures, pass, params, settings), format_mime_type(params.format),
                 std::move(memory));
 }
 

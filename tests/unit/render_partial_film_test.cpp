@@ -101,7 +101,7 @@ TEST(RenderPartialFilm, CodecRoundTripsAndRefusesBrokenBytes) {
   Renderer renderer(*scene_preset("sphere"), lighting(LightingMode::EnvMap), settings(8), sky_map());
   const RangePartial partial = render_range(renderer, 2, 5);
   const auto bytes = encode_partial(partial);
-  EXPECT_EQ(bytes.size(), 32u + 64u * 16u);
+  EXPECT_EQ(bytes.size(), 36u + 64u * 16u);
   const RangePartial back = decode_partial(bytes, 64);
   EXPECT_EQ(back.range, partial.range);
   EXPECT_EQ(back.rays, partial.rays);
@@ -121,8 +121,11 @@ TEST(RenderPartialFilm, CodecRoundTripsAndRefusesBrokenBytes) {
   EXPECT_EQ(kind(bytes, 63), ErrorKind::TooLarge);
   EXPECT_EQ(kind(std::span(bytes).first(bytes.size() - 1), 64), ErrorKind::Corrupt);
   auto bad_count = bytes;
-  bad_count[32 + 12] = 4;  // the first pixel claims 4 samples of a 3-sample range
+  bad_count[36 + 12] = 4;  // the first pixel claims 4 samples of a 3-sample range
   EXPECT_EQ(kind(bad_count, 64), ErrorKind::Corrupt);
+  auto bad_passes = bytes;
+  bad_passes[24] = 0x10;  // a pass no renderer has
+  EXPECT_EQ(kind(bad_passes, 64), ErrorKind::Corrupt);
   auto empty_range = bytes;
   empty_range[20] = 2;  // end = first
   EXPECT_EQ(kind(empty_range, 64), ErrorKind::Corrupt);

@@ -1,0 +1,26 @@
+#pragma once
+// The `pass` query parameter of a render's image: "color" (the default), one of the auxiliary passes'
+// names (render::AuxPass), or "all": every pass of the render as the channels of one EXR.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "api/params.hpp"
+#include "engine/render/scene_desc.hpp"
+
+namespace lp::api {
+
+struct RenderImagePass {
+  bool all = false;
+  std::optional<render::AuxPass> aux;  // the colour when absent (and not all)
+};
+
+inline constexpr const char* kColorPassName = "color";
+inline constexpr const char* kAllPassesName = "all";
+
+// The names `pass` takes, in order: color, the auxiliary passes, all.
+std::vector<std::string> render_image_pass_names();
+// 400 invalid_parameter for another name.
+RenderImagePass parse_render_image_pass(const Query& q);
+
+}  // namespace lp::api

@@ -1,0 +1,213 @@
+// Backgrounds, passes and the ground through the real server: a transparent render's corner has alpha 0
+// and its sphere alpha 1 in the alpha pass, the RGBA PNG (straight alpha) and the RGBA EXR
+// (premultiplied); the albedo, normal and depth passes of a white sphere; pass=all as one EXR whose
+// channels OpenEXR reads by name; a shadow catcher's alpha; and the refusals (a pass not asked for, pass=all
+// outside EXR, bad fields).
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "engine/image/image_io.hpp"
+#include "support/http_reply.hpp"
+#include "support/render_polling.hpp"
+#include "support/server_process.hpp"
+#include "support/temp_dir.hpp"
+#include "support/white_map.hpp"
+
+namespace lp {
+namespace {
+
+using nlohmann::json;
+using test::Reply;
+
+constexpr int kSize = 33;  // odd: the centre pixel looks at the sphere's nearest point
+
+test::ServerProcess& server() {
+  static test::ServerProcess s;
+  static const bool uploaded = [] {
+    const Reply up = test::upload_white_map(*s.client(), "white");
+    EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;
+    return true;
+  }();
+  (void)uploaded;
+  return s;
+}
+
+Reply get(const std::string& path) {
+  return test::reply(server().client()->Get(path.c_str()));
+}
+
+Reply post_render(const json& body) {
+  return test::reply(server().client()->Post("/api/v1/renders", body.dump(), "application/json"));
+}
+
+// A white diffuse sphere of radius 1 at the origin, seen from 4 units on -y, on the white map.
+json sphere_body(json extra) {
+  json body = {{"envmap", "white"},
+               {"width", kSize},
+               {"height", kSize},
+               {"spp", 8},
+               {"scene",
+                {{"objects",
+                  {{{"type", "sphere"},
+                    {"center", {0, 0, 0}},
+                    {"radius", 1},
+                    {"material", {{"type", "diffuse"}, {"albedo", 1}}}}}},
+                 {"camera", {{"position", {0, -4, 0}}, {"look_at", {0, 0, 0}}, {"fov_deg", 40}}}}}};
+  if (extra.is_object()) body.update(extra);
+  return body;
+}
+
+// Submits and waits for the render to be done; its id.
+std::string rendered(const json& body) {
+  const Reply r = post_render(body);
+  EXPECT_EQ(r.status, 202) << r.body;
+  if (r.status != 202) return "";
+  const std::string id = r.body_json()["id"];
+  EXPECT_EQ(test::finished_render(*server().client(), id)["status"], "done");
+  return id;
+}
+
+Image decode(const Reply& r) {
+  return read_image({reinterpret_cast<const uint8_t*>(r.body.data()), r.body.size()}).image;
+}
+
+// The channels of an EXR, by name, through OpenEXR (from a file: its API reads files or its streams).
+std::map<std::string, std::vector<float>> exr_channels(const std::string& bytes, int& width) {
+  test::TempDir dir;
+  const std::string path = (dir.path() / "passes.exr").string();
+  std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  Imf::InputFile file(path.c_str());
+  const Imath::Box2i window = file.header().dataWindow();
+  width = window.max.x - window.min.x + 1;
+  const int height = window.max.y - window.min.y + 1;
+  std::map<std::string, std::vector<float>> out;
+  Imf::FrameBuffer fb;
+  for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c) {
+    auto& values = out[c.name()];
+    values.resize(size_t(width) * size_t(height));
+    fb.insert(c.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                   sizeof(float) * size_t(width)));
+  }
+  file.setFrameBuffer(fb);
+  file.readPixels(window.min.y, window.max.y);
+  return out;
+}
+
+TEST(RenderPassesApi, ATransparentRenderHasAlphaZeroInItsCornerAndOneOnTheSphere) {
+  const std::string id = rendered(sphere_body({{"background", "transparent"}}));
+  const json st = get("/api/v1/renders/" + id).body_json();
+  EXPECT_EQ(st["background"], "transparent");
+  EXPECT_EQ(st["passes"], json::array({"alpha"}));  // kept for every transparent render
+  const int c = kSize / 2;
+
+  const Image alpha = decode(get("/api/v1/renders/" + id + "/image?pass=alpha&format=pfm"));
+  ASSERT_EQ(alpha.width(), kSize);
+  EXPECT_EQ(alpha.at(0, 0).x, 0.0f);
+  EXPECT_EQ(alpha.at(c, c).x, 1.0f);
+
+  const Reply png = get("/api/v1/renders/" + id + "/image?format=png");
+  ASSERT_EQ(png.status, 200);
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* rgba = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.body.data()),
+                                        int(png.body.size()), &w, &h, &channels, 0);
+  ASSERT_NE(rgba, nullptr);
+  EXPECT_EQ(channels, 4);  // RGBA
+  EXPECT_EQ(rgba[3], 0);   // the corner: transparent
+  EXPECT_EQ(rgba[(size_t(c) * size_t(w) + size_t(c)) * 4 + 3], 255);
+  EXPECT_GT(rgba[(size_t(c) * size_t(w) + size_t(c)) * 4], 100);  // the lit sphere, straight colour
+  stbi_image_free(rgba);
+
+  int width = 0;
+  const auto exr = exr_channels(get("/api/v1/renders/" + id + "/image?format=exr").body, width);
+  ASSERT_EQ((std::set<std::string>{"A", "B", "G", "R"}), [&] {
+    std::set<std::string> names;
+    for (const auto& [name, _] : exr) names.insert(name);
+    return names;
+  }());
+  EXPECT_EQ(exr.at("A")[0], 0.0f);
+  EXPECT_EQ(exr.at("R")[0], 0.0f);  // premultiplied: nothing where nothing is
+  EXPECT_EQ(exr.at("A")[size_t(c) * size_t(width) + size_t(c)], 1.0f);
+}
+
+TEST(RenderPassesApi, AlbedoNormalAndDepthOfAWhiteSphereAndEveryPassInOneExr) {
+  const std::string id = rendered(sphere_body({{"passes", {"albedo", "normal", "depth"}}}));
+  EXPECT_EQ(get("/api/v1/renders/" + id).body_json()["passes"], json::array({"albedo", "normal", "depth"}));
+  const int c = kSize / 2;
+  const Image albedo = decode(get("/api/v1/renders/" + id + "/image?pass=albedo&format=exr"));
+  EXPECT_NEAR(albedo.at(c, c).x, 1.0f, 1e-5f);
+  EXPECT_EQ(albedo.at(0, 0).x, 0.0f);
+  const Image normal = decode(get("/api/v1/renders/" + id + "/image?pass=normal&format=pfm"));
+  EXPECT_NEAR(normal.at(c, c).y, -1.0f, 1e-3f);  // (p - c) / r at the point facing the camera
+  const Image depth = decode(get("/api/v1/renders/" + id + "/image?pass=depth&format=exr"));
+  EXPECT_NEAR(depth.at(c, c).x, 3.0f, 1e-3f);  // distance 4 minus radius 1
+  EXPECT_TRUE(std::isinf(depth.at(0, 0).x));
+
+  int width = 0;
+  const auto all = exr_channels(get("/api/v1/renders/" + id + "/image?pass=all&format=exr").body, width);
+  std::set<std::string> names;
+  for (const auto& [name, _] : all) names.insert(name);
+  EXPECT_EQ(names, (std::set<std::string>{"Albedo.B", "Albedo.G", "Albedo.R", "B", "Depth.Z", "G", "Ns.X",
+                                          "Ns.Y", "Ns.Z", "R"}));
+  const size_t centre = size_t(c) * size_t(width) + size_t(c);
+  EXPECT_NEAR(all.at("Depth.Z")[centre], 3.0f, 1e-3f);
+  EXPECT_NEAR(all.at("Ns.Y")[centre], -1.0f, 1e-3f);
+  EXPECT_NEAR(all.at("Albedo.G")[centre], 1.0f, 1e-5f);
+
+  // Passes the render did not ask for, and pass=all outside EXR.
+  const Reply missing = get("/api/v1/renders/" + id + "/image?pass=alpha");
+  EXPECT_EQ(missing.status, 409);
+  EXPECT_EQ(missing.body_json()["error"]["code"], "pass_not_rendered");
+  EXPECT_EQ(get("/api/v1/renders/" + id + "/image?pass=all&format=png").status, 400);
+  EXPECT_EQ(get("/api/v1/renders/" + id + "/image?pass=shadow").status, 400);
+  EXPECT_EQ(get("/api/v1/renders/" + id + "/image?pass=normal&format=png").status, 200);
+}
+
+TEST(RenderPassesApi, AShadowCatcherUnderTheSphereCarriesItsShadowInAlpha) {
+  json body = sphere_body({{"background", "transparent"}, {"spp", 16}});
+  body["scene"]["objects"].push_back({{"type", "ground"}, {"shadow_catcher", true}});  // at z = -1
+  body["scene"]["camera"] = {{"position", {0, -6, 3}}, {"look_at", {0, 0, -0.5}}, {"fov_deg", 50}};
+  const std::string id = rendered(body);
+  const Image alpha = decode(get("/api/v1/renders/" + id + "/image?pass=alpha&format=pfm"));
+  const Image color = decode(get("/api/v1/renders/" + id + "/image?format=pfm"));
+  ASSERT_EQ(alpha.width(), kSize);
+  // The sky at the top: nothing. The contact shadow right under the sphere's silhouette: partly opaque
+  // black. The ground near the image's bottom corners, far from the sphere: mostly clear.
+  EXPECT_EQ(alpha.at(kSize / 2, 0).x, 0.0f);
+  float darkest = 0;
+  for (int y = kSize / 2; y < kSize; ++y)
+    darkest = std::max(darkest, alpha.at(kSize / 2, y).x < 1 ? alpha.at(kSize / 2, y).x : 0.0f);
+  EXPECT_GT(darkest, 0.3f);
+  EXPECT_LT(alpha.at(0, kSize - 1).x, 0.2f);
+  EXPECT_EQ(color.at(0, kSize - 1), (Rgb{0, 0, 0}));  // black, premultiplied: only alpha carries it
+}
+
+TEST(RenderPassesApi, BadBackgroundClampPassesAndGroundAreRejectedNamingTheField) {
+  const auto field_of = [](const json& body) {
+    const Reply r = post_render(body);
+    EXPECT_EQ(r.status, 400) << r.body;
+    return r.status == 400 ? r.body_json()["error"]["message"].get<std::string>() : "";
+  };
+  EXPECT_EQ(field_of(sphere_body({{"background", "blue"}})).rfind("field 'background'", 0), 0u);
+  EXPECT_EQ(field_of(sphere_body({{"background", {1, -1, 0}}})).rfind("field 'background'", 0), 0u);
+  EXPECT_EQ(field_of(sphere_body({{"clamp", 0}})).rfind("field 'clamp'", 0), 0u);
+  EXPECT_EQ(field_of(sphere_body({{"passes", {"albedo", "beauty"}}})).rfind("field 'passes[1]'", 0), 0u);
+  EXPECT_EQ(field_of(sphere_body({{"passes", {"depth", "depth"}}})).rfind("field 'passes[1]'", 0), 0u);
+  json ground = sphere_body({});
+  ground["scene"]["objects"].push_back({{"type", "ground"}, {"normal", {0, 0, 1}}});
+  EXPECT_EQ(field_of(ground).rfind("field 'scene.objects[1].normal'", 0), 0u);
+}
+
+}  // namespace
+}  // namespace lp
