@@ -33,7 +33,7 @@ std::vector<render::Camera> turntable_cameras(const api::TurntableRequest& reque
 
 int64_t turntable_bytes(const api::TurntableRequest& request, int64_t triangles) {
   const auto& s = request.render.settings;
-  return running_render_bytes(s.width, s.height, triangles) +
+  return running_render_bytes(s, triangles) +
          request.turntable.frames * EnvMap::image_bytes(s.width, s.height);
 }
 
