@@ -12,6 +12,8 @@
 #include "cli/image_output.hpp"
 #include "cli/output.hpp"
 #include "cli/progress_bar.hpp"
+#include "cli/render_fields.hpp"
+#include "cli/render_picture.hpp"
 #include "cli/scene_file.hpp"
 #include "cli/turntable_files.hpp"
 #include "cli/turntable_options.hpp"
@@ -37,11 +39,11 @@ std::string help() {
          "else\n"
          "a line at each 10%.\n\n"
          "Other options set the request's top-level fields, replacing the file's: --width, --height, --spp,\n"
-         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping,\n"
+         "--max-depth, --seed, --mipmaps, --normal-maps, --sampling, --tone-mapping, --background, --clamp,\n"
          "and --envmap (a path relative to the working directory).\n\n" +
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
-         image_params_help(ToneOption::RequestField) + turntable_help() +
+         image_params_help(ToneOption::RequestField) + request_options_help() + turntable_help() +
          option_line("--threads N",
                      fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
                                  api::kThreads.range.max, api::kThreads.default_text)) +
@@ -60,10 +62,10 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
 }
 
 // Renders the frames (the same scene seen by each camera) one after the other, with one progress over
-// all of them, handing each image to `done` as it finishes.
+// all of them, handing each picture (`image` says its format) to `done` as it finishes.
 template <class Done>
-void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras, ProgressStyle style,
-                   Done&& done) {
+void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras,
+                   const api::PreviewParams& image, ProgressStyle style, Done&& done) {
   const render::RenderSettings& s = r.request.settings;
   const int64_t frames = int64_t(cameras.size());
   std::optional<ProgressBar> bar;
@@ -80,7 +82,7 @@ void render_frames(const SceneRender& r, const std::vector<render::Camera>& came
     const std::atomic<bool> never{false};
     for (const render::RenderPass& pass : render::render_passes(s, s.spp))
       renderer.render(pass, never, [&bar, spp = pass.spp] { bar->advance(spp); });
-    done(i, renderer.image());
+    done(i, encode_picture(renderer, s, image));
   }
   if (bar) bar->finish();
 }
@@ -93,26 +95,30 @@ void run(Arguments& args) {
   api::PreviewParams image =
       take_image_params(args, turntable ? std::nullopt : file, ToneOption::RequestField);
   const auto threads = thread_limit(args);
-  const api::Json fields = args.take_rest_as_json();
+  const RequestOptions request = take_request_options(args);
+  api::Json fields = args.take_rest_as_json();
+  fields.update(request.fields);
   if (turntable) {
     require_turntable_folder(file);
   } else {
     refuse_binary_to_terminal(file);
     if (file) require_folder_of(*file);
   }
-  const SceneRender scene = read_scene(args.positional()[0], fields, turntable, api::RequestLimits{});
+  const SceneRender scene =
+      read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
+  refuse_unwritten_passes(scene.request.settings);
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
-    render_frames(scene, out.cameras(), progress,
-                  [&](int64_t i, const Image& frame) { out.write(i, frame); });
+    render_frames(scene, out.cameras(), image, progress,
+                  [&](int64_t i, const std::vector<uint8_t>& frame) { out.write(i, frame); });
     out.finish();
     return;
   }
   const std::vector<render::Camera> one = {scene.request.scene.camera};
-  render_frames(scene, one, progress, [&](int64_t, const Image& picture) {
+  render_frames(scene, one, image, progress, [&](int64_t, const std::vector<uint8_t>& picture) {
     Output out(file);
-    out.write(write_image(picture, image.format, image.tone));
+    out.write(picture);
     out.finish();
   });
 }
@@ -124,7 +130,7 @@ Command render_command() {
           kSynopsis,
           "path-trace a scene (the JSON body of POST /api/v1/renders) or a framed model to an image or a "
           "turntable",
-          {"quiet"},
+          {"quiet", "ground"},
           help,
           run};
 }

@@ -42,6 +42,19 @@ void load_meshes(render::SceneDesc& scene, const std::filesystem::path& base, co
   }
 }
 
+// Appends `objects` to the body's scene objects; a body without a list of objects (a preset, or no scene:
+// the default preset) is refused, its objects being the preset's.
+void append_objects(api::Json& body, const api::Json& objects, std::string_view options) {
+  if (objects.empty() || !body.is_object()) return;
+  api::Json* list = nullptr;
+  if (const auto scene = body.find("scene"); scene != body.end() && scene->is_object())
+    if (const auto found = scene->find("objects"); found != scene->end() && found->is_array()) list = &*found;
+  if (!list)
+    throw api::ApiError(api::ErrorCode::BadRequest,
+                        fmt::format("{} adds to a scene's objects: this scene has none (a preset)", options));
+  list->insert(list->end(), objects.begin(), objects.end());
+}
+
 }  // namespace
 
 api::Json model_body(const std::filesystem::path& model) {
@@ -49,10 +62,12 @@ api::Json model_body(const std::filesystem::path& model) {
 }
 
 SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
-                       const std::optional<api::Json>& turntable, const api::RequestLimits& limits) {
+                       const ExtraObjects& extra_objects, const std::optional<api::Json>& turntable,
+                       const api::RequestLimits& limits) {
   const bool is_model = !model_format(file).empty();
   api::Json body = is_model ? model_body(file) : read_json(file);
   if (body.is_object()) body.update(overrides);
+  append_objects(body, extra_objects.objects, extra_objects.options);
   // A model file's own path is already relative to the working directory, as is a map named on the
   // command line.
   const std::filesystem::path folder = is_model ? std::filesystem::path() : file.parent_path();

@@ -27,11 +27,19 @@ struct SceneRender {
 // "path": FILE}]}}.
 api::Json model_body(const std::filesystem::path& model);
 
+// Scene objects the command line adds (a JSON array), and the options that added them, for messages.
+struct ExtraObjects {
+  api::Json objects = api::Json::array();
+  std::string options;
+};
+
 // `file`: a model file (model_format() names its format) or a scene file. `overrides`: top-level fields
 // given on the command line, which replace the body's; a relative "envmap" path given there is taken from
 // the working directory. With `turntable`, the body is that of a turntable request (that object its
-// `turntable` field), read by its parser.
+// `turntable` field), read by its parser. `extra_objects` are appended to the body's scene objects (a scene
+// without a list of objects, a preset, is then refused: bad_request).
 SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
-                       const std::optional<api::Json>& turntable, const api::RequestLimits& limits);
+                       const ExtraObjects& extra_objects, const std::optional<api::Json>& turntable,
+                       const api::RequestLimits& limits);
 
 }  // namespace lp::cli

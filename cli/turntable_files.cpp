@@ -44,8 +44,7 @@ std::string TurntableFiles::frame_name(int64_t index) const {
   return fmt::format("frame_{:04}.{}", index, enum_name(image_.format));
 }
 
-void TurntableFiles::write(int64_t index, const Image& frame) const {
-  const std::vector<uint8_t> bytes = write_image(frame, image_.format, image_.tone);
+void TurntableFiles::write(int64_t index, std::span<const uint8_t> bytes) const {
   write_atomically(folder_ / frame_name(index),
                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }

@@ -5,6 +5,7 @@
 // 4x4 camera-to-world matrix in Blender's camera convention (16 numbers), written once every frame is.
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ class TurntableFiles {
 
   const std::vector<render::Camera>& cameras() const { return cameras_; }
   std::string frame_name(int64_t index) const;
-  void write(int64_t index, const Image& frame) const;
+  void write(int64_t index, std::span<const uint8_t> picture) const;
   // Writes cameras.json.
   void finish() const;
 

@@ -31,11 +31,10 @@ std::vector<uint8_t> tone_map_rgba8(const Image& color, const Image& alpha, cons
   tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 1 << 14), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) {
       const float coverage = std::clamp(a[i * 3], 0.0f, 1.0f);
-      if (coverage > 0) {
-        const float straight[3] = {src[i * 3] / coverage, src[i * 3 + 1] / coverage,
-                                   src[i * 3 + 2] / coverage};
-        map(straight, &out[i * 4]);
-      }
+      float rgb[3] = {0, 0, 0};
+      if (coverage > 0)
+        for (size_t c = 0; c < 3; ++c) rgb[c] = src[i * 3 + c] / coverage;
+      map(rgb, &out[i * 4]);
       out[i * 4 + 3] = uint8_t(std::lround(coverage * 255.0f));
     }
   });

@@ -219,6 +219,38 @@ TEST(CliRender, FieldsOnTheCommandLineReplaceTheFilesAndPngIsToneMapped) {
   for (const uint8_t v : png.rgb) EXPECT_EQ(v, 128);
 }
 
+// --background transparent: an RGBA PNG whose corner (the map) has alpha 0 and whose middle (the model)
+// alpha 255; with --ground (a shadow catcher under the model) and --clamp, the request's other fields.
+TEST(CliRender, ATransparentBackgroundGivesAPngWithAlpha) {
+  const test::TempDir dir;
+  const test::CliRun run = test::run_cli(
+      {"render", test::model_path("quad.glb").string(), "--background", "transparent", "--ground", "--clamp",
+       "4", "--width", "40", "--height", "30", "--spp", "4", "-o", "cut.png", "-q"},
+      dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const std::vector<uint8_t> bytes = test::read_bytes(dir.path() / "cut.png");
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  const std::vector<uint8_t> rgba(pixels, pixels + size_t(width) * size_t(height) * 4);
+  stbi_image_free(pixels);
+  EXPECT_EQ(channels, 4);
+  ASSERT_EQ(width, 40);
+  EXPECT_EQ(rgba[3], 0);                                 // (0, 0)
+  EXPECT_EQ(rgba[(size_t(15) * 40 + 20) * 4 + 3], 255);  // (20, 15)
+}
+
+// Passes other than a transparent render's alpha are the server's to serve: refused before rendering.
+TEST(CliRender, PassesTheToolDoesNotWriteAreRefused) {
+  const test::TempDir dir;
+  test::expect_cli_refusals(
+      {"render", test::model_path("quad.glb").string(), "-o", "a.exr"},
+      {{{"--passes", R"(["depth"])"},
+        "bad_request: the tool writes a render's colour (and its alpha when the background is transparent), "
+        "not its 'depth' pass: ask the server for passes (GET /api/v1/renders/{id}/image?pass=NAME)"}},
+      dir.path());
+}
+
 TEST(CliRender, BadScenesFailAsTheApiAnswersThem) {
   const test::TempDir dir;
   const auto client = test::shared_server().client();
