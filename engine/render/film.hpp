@@ -53,7 +53,7 @@ class Film {
   // The staging sums of the auxiliary channels of one pixel (passes().channels() values).
   void set_pass_aux(int x, int y, const float* sums) {
     const size_t n = size_t(passes_.channels()), i = (size_t(y) * size_t(width_) + size_t(x)) * n;
-    std::copy(sums, sums + n, &aux_pass_[i]);
+    std::copy(sums, sums + n, aux_pass_.data() + i);
   }
   // Adds the staged pass of `spp` samples per pixel to the totals.
   void merge_pass(int spp);

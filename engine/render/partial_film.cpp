@@ -63,7 +63,7 @@ void PartialFilm::set_mean(AuxPass p, const Image& mean) {
     throw Error(ErrorKind::InvalidArgument, "partial film: the pass does not match the film");
   for (size_t i = 0; i < counts_.size(); ++i)
     aux_sums(p, passes_, mean.at(int(i % size_t(width_)), int(i / size_t(width_))), counts_[i],
-             &aux_[i * aux_channels()]);
+             aux_.data() + i * aux_channels());
 }
 
 Image PartialFilm::mean(AuxPass p) const {

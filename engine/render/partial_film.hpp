@@ -50,8 +50,8 @@ class PartialFilm {
   // The same with the sums of the auxiliary channels (aux_channels() of them).
   void add(size_t pixel, Rgb sum, uint32_t count, const float* aux) {
     add(pixel, sum, count);
-    double* a = &aux_[pixel * aux_channels()];
-    for (size_t c = 0; c < aux_channels(); ++c) a[c] += aux[c];
+    const size_t n = aux_channels();
+    for (size_t c = 0; c < n; ++c) aux_[pixel * n + c] += aux[c];
   }
   // Sets auxiliary pass p (which the film holds) to `mean` over each pixel's count (a render continued
   // from its images).
@@ -63,7 +63,7 @@ class PartialFilm {
     return {float(sums_[pixel * 3]), float(sums_[pixel * 3 + 1]), float(sums_[pixel * 3 + 2])};
   }
   const double* sums() const { return sums_.data(); }
-  const double* aux(size_t pixel) const { return &aux_[pixel * aux_channels()]; }
+  const double* aux(size_t pixel) const { return aux_.data() + pixel * aux_channels(); }
   uint32_t count(size_t pixel) const { return counts_[pixel]; }
   // The mean of every pixel (black where no sample arrived yet).
   Image mean() const;

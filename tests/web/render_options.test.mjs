@@ -53,13 +53,17 @@ test('a shadow-catcher ground under a model on a transparent background adds cov
   const ground = form().locator('[name=ground]');
   assert.ok(await ground.isEnabled(), 'a ground with a model');
 
+  // Waits for this render's own finished picture, not the one the panel showed before it.
   const renderBox = async () => {
-    const posted = page.waitForRequest(isRenderPost);
+    const answered = page.waitForResponse((r) => isRenderPost(r.request()));
     await page.locator('#render-submit').click();
-    const body = (await posted).postDataJSON();
+    const response = await answered;
+    const body = response.request().postDataJSON();
+    const { id } = await response.json();
     await page.locator('#render-status[data-status=done]').waitFor({ timeout: 45000 });
-    await waitForImage(page, '#render-image', 64);
-    return { body, image: await pixelsOf(page, '#render-image') };
+    const image = await renderPixels(page, `/renders/${id}/image`);
+    assert.equal(image.width, 64);
+    return { body, image };
   };
   await form().locator('[name=width]').fill('64');
   await form().locator('[name=height]').fill('64');
