@@ -50,6 +50,7 @@ constexpr std::array kTable = {
     ErrorCodeEntry{ShuttingDown, 503, "shutting_down", {}},
     ErrorCodeEntry{NotReady, 503, "not_ready", {}},
     ErrorCodeEntry{MemoryBusy, 503, "memory_busy", {}},
+    ErrorCodeEntry{DenoiserUnavailable, 503, "denoiser_unavailable", {}},
     ErrorCodeEntry{InsufficientMemory, 507, "insufficient_memory", {}},
     ErrorCodeEntry{InsufficientStorage, 507, "insufficient_storage", {}},
 };

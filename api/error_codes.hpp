@@ -57,6 +57,7 @@ enum class ErrorCode {
   ShuttingDown,
   NotReady,  // still loading its maps and state at start
   MemoryBusy,
+  DenoiserUnavailable,  // a denoise asked of a server whose denoiser has no weights (--denoise-weights)
   InsufficientMemory,
   InsufficientStorage,
 };

@@ -62,6 +62,10 @@ Doc field_doc(Location location, const NumberField& f) {
   return range_doc(std::move(location), f.range, f.fallback);
 }
 
+Doc bool_doc(Location location, const BoolField& f) {
+  return {std::move(location), {}, {}, {}, f.fallback ? "true" : "false"};
+}
+
 void add_enum_parameters(std::vector<Doc>& d) {
   const std::string samples = "/api/v1/envmaps/{id}/samples", cut = "/api/v1/envmaps/{id}/median-cut";
   d.push_back(
@@ -144,6 +148,7 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(lower_bound_doc(request("spp"), 1, settings.spp));
   d.push_back(lower_bound_doc(request("max_depth"), double(kMaxDepth.min), settings.max_depth));
   d.push_back(enum_doc(request("sampling"), std::optional(settings.sampling)));
+  d.push_back(bool_doc(request(kRenderDenoise.name), kRenderDenoise));
   d.push_back(lower_bound_doc(request("seed"), 0, double(settings.seed)));
   d.push_back(range_doc(schema("RenderCamera", {"properties", "fov_deg"}), kFovDeg, camera.fov_deg));
   const render::CameraFit fit;
@@ -233,6 +238,8 @@ void add_turntable_parameters(std::vector<Doc>& d) {
   d.push_back(range_doc(field("elevation_deg"), limits::kElevationDeg, t.elevation_deg));
   d.push_back(range_doc(field("elevation_sweep_deg"), kTurntableSweepDeg, t.elevation_sweep_deg));
   d.push_back(range_doc(field("margin"), limits::kFitMargin, t.margin));
+  d.push_back(
+      bool_doc(schema("TurntableRequest", {"properties", kTurntableDenoise.name}), kTurntableDenoise));
   d.push_back(field_doc({"components", "parameters", "ImageSize", "schema"}, kImageSize));
   const std::string root = "/api/v1/turntables/{id}";
   d.push_back(field_doc(query(root + "/animation.webp", "get", "fps"), kAnimationFps));

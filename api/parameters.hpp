@@ -115,6 +115,16 @@ struct EnumField {
 inline constexpr EnumField<ToneCurve> kToneMapping{"tone_mapping", ToneCurve::Standard};
 inline constexpr EnumField<ToneCurve> kRenderToneMapping{"tone_mapping", ToneCurve::Neutral};
 
+// A boolean field of a request body, and its default.
+struct BoolField {
+  const char* name;
+  bool fallback;
+};
+// A render's colour denoised after its last pass (which then also computes the albedo and normal passes):
+// off for renders, whose raw colour stays the result one measures error on; on for turntables' frames.
+inline constexpr BoolField kRenderDenoise{"denoise", false};
+inline constexpr BoolField kTurntableDenoise{"denoise", true};
+
 // Where api/openapi.yaml states a parameter, and what it must state: `location` is a path of keys from
 // the document's root; in a list, "name=X" picks the parameter named X and "type=X" the schema whose
 // `type` property is the enum [X]. References ($ref, allOf of one $ref) are followed.
@@ -122,7 +132,7 @@ struct DocumentedParameter {
   std::vector<std::string> location;
   std::vector<std::string> names;  // enum values (empty for a number)
   std::optional<double> minimum, maximum;
-  std::optional<std::string> fallback;  // the default: an enum's name or a number
+  std::optional<std::string> fallback;  // the default: an enum's name, a number, or true / false
 };
 std::vector<DocumentedParameter> documented_parameters();
 

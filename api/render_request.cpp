@@ -338,11 +338,11 @@ render::PassSet parse_passes(const Json& body) {
 
 }  // namespace
 
-RenderRequest parse_render_request(const Json& body, const RequestLimits& limits) {
+RenderRequest parse_render_request(const Json& body, const RequestLimits& limits, const BoolField& denoise) {
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
-  reject_unknown_fields(
-      body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed", "mipmaps",
-             "normal_maps", "sampling", kRenderToneMapping.name, "background", "clamp", "passes"});
+  reject_unknown_fields(body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed",
+                               "mipmaps", "normal_maps", "sampling", kRenderToneMapping.name, "background",
+                               "clamp", "passes", denoise.name});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");
@@ -365,6 +365,12 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   r.settings.passes = parse_passes(body);
   // A cut-out's pictures are RGBA: its alpha is always kept.
   if (r.settings.background.mode == BackgroundMode::Transparent) r.settings.passes.add(AuxPass::Alpha);
+  // The denoiser takes the colour with its albedo and normal.
+  r.denoise = json_bool(body, denoise.name, denoise.fallback);
+  if (r.denoise) {
+    r.settings.passes.add(AuxPass::Albedo);
+    r.settings.passes.add(AuxPass::Normal);
+  }
   as_invalid_field([&] {
     r.scene.validate("scene");
     r.lighting.validate("lighting");

@@ -21,11 +21,14 @@ struct RenderRequest {
   render::Lighting lighting;
   render::RenderSettings settings;
   ToneCurve tone_mapping = kRenderToneMapping.fallback;  // the default of its 8-bit pictures
+  bool denoise = kRenderDenoise.fallback;  // its albedo and normal passes are then always computed
   // The camera once the scene's models are loaded, and what the view leaves out (set by the server).
   std::optional<render::SceneView> view;
 };
 
-RenderRequest parse_render_request(const Json& body, const RequestLimits& limits);
+// `denoise` is the field's declaration for this kind of request (renders: kRenderDenoise; turntables theirs).
+RenderRequest parse_render_request(const Json& body, const RequestLimits& limits,
+                                   const BoolField& denoise = kRenderDenoise);
 
 // The limits a model a scene names is loaded under (--max-mesh-triangles and the texture pixel limits).
 ModelLimits model_limits(const RequestLimits& limits);

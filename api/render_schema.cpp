@@ -31,6 +31,11 @@ void describe_render(Json& out, const RenderRequest& request, const RenderProgre
   out["samples_per_s"] = progress.render_s > 0 ? double(stats.samples) / progress.render_s : 0.0;
   out["rays_per_s"] = progress.render_s > 0 ? double(stats.rays) / progress.render_s : 0.0;
   out["image_available"] = progress.image_available;
+  out["denoise"] = request.denoise;
+  out["denoised"] = request.denoise
+                        ? Json{{"ready", progress.denoise_s.has_value()},
+                               {"seconds", progress.denoise_s ? Json(*progress.denoise_s) : Json()}}
+                        : Json();
   if (request.view) {
     const render::Camera& c = request.view->camera;
     out["camera"] = {{"position", {c.position.x, c.position.y, c.position.z}},

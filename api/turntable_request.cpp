@@ -73,7 +73,7 @@ TurntableRequest parse_turntable_request(const Json& body, const RequestLimits& 
   r.turntable = parse_turntable(*turntable);
   Json render = body;
   render.erase(kField);
-  r.render = parse_render_request(render, limits);
+  r.render = parse_render_request(render, limits, kTurntableDenoise);
   check_object(r);
   check_frames_fit(r, limits);
   return r;

@@ -98,6 +98,10 @@ TEST(OpenApiParameters, EveryDeclaredEnumAndRangeIsTheDocumentedOne) {
     }
     if (!p.fallback) {
       EXPECT_FALSE(schema["default"]);
+    } else if (*p.fallback == "true" || *p.fallback == "false") {
+      EXPECT_EQ(schema["type"].as<std::string>(), "boolean");
+      ASSERT_TRUE(schema["default"]);
+      EXPECT_EQ(schema["default"].as<bool>(), *p.fallback == "true");
     } else if (p.names.empty()) {
       ASSERT_TRUE(schema["default"]);
       EXPECT_FLOAT_EQ(float(schema["default"].as<double>()), float(std::stod(*p.fallback)));

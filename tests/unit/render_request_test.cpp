@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "api/api_error.hpp"
+#include "api/turntable_request.hpp"
 #include "engine/fresnel/metals.hpp"
 
 namespace lp::api {
@@ -265,6 +266,30 @@ TEST(RenderRequest, AnEmptyObjectListIsAValidScene) {
   const auto r = parse(R"({"envmap":"e","scene":{"objects":[]}})");
   EXPECT_FALSE(r.preset);
   EXPECT_TRUE(r.scene.objects.empty());
+}
+
+}  // namespace
+}  // namespace lp::api
+
+namespace lp::api {
+namespace {
+
+TEST(RenderRequest, DenoiseIsOffForRendersOnForTurntablesAndBringsAlbedoAndNormal) {
+  const auto plain = parse(R"({"envmap":"forest","passes":["depth"]})");
+  EXPECT_FALSE(plain.denoise);
+  EXPECT_EQ(plain.settings.passes.list(), std::vector<AuxPass>{AuxPass::Depth});
+  const auto denoised = parse(R"({"envmap":"forest","passes":["depth"],"denoise":true})");
+  EXPECT_TRUE(denoised.denoise);
+  EXPECT_EQ(denoised.settings.passes.list(),
+            (std::vector<AuxPass>{AuxPass::Albedo, AuxPass::Normal, AuxPass::Depth}));
+  // The same field with the turntables' default; a turntable's frames are denoised unless it says false.
+  const Json body = Json::parse(R"({"envmap":"forest","turntable":{"frames":2}})");
+  EXPECT_TRUE(parse_turntable_request(body, {}).render.denoise);
+  Json off = body;
+  off["denoise"] = false;
+  EXPECT_FALSE(parse_turntable_request(off, {}).render.denoise);
+  EXPECT_TRUE(parse_turntable_request(off, {}).render.settings.passes.list().empty());
+  expect_field_error(R"({"envmap":"forest","denoise":1})", "denoise");
 }
 
 }  // namespace
