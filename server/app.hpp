@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "engine/core/memory_budget.hpp"
+#include "engine/denoise/denoiser.hpp"
 #include "server/assets/asset_registry.hpp"
 #include "server/assets/model_cache.hpp"
 #include "server/jobs/job_manager.hpp"
@@ -60,9 +61,10 @@ struct App {
   MemoryBudget memory;    // --max-memory-mb: maps, their caches, images in flight, render results
   MemoryBudget decoding;  // the part of it decodes in flight may take together (see decoding_budget_bytes)
   EnvMapRegistry envmaps;
-  AssetRegistry assets;  // model files uploaded for scenes (assets/stored_assets.hpp)
-  ModelCache models;     // the models of scenes' mesh objects, loaded when a request names them
-  MeshBundles bundles;   // the models' files, for the workers of split renders (--redis)
+  AssetRegistry assets;        // model files uploaded for scenes (assets/stored_assets.hpp)
+  ModelCache models;           // the models of scenes' mesh objects, loaded when a request names them
+  MeshBundles bundles;         // the models' files, for the workers of split renders (--redis)
+  denoise::Denoiser denoiser;  // of renders and turntables with `denoise` (--denoise-weights)
   ScaleOutCounters scale_out_counters;  // split renders' work items, for /metrics
   std::unique_ptr<StateStore> state;    // null: nothing is kept across restarts
   std::atomic<int> event_streams{0};    // render event streams open now
@@ -80,6 +82,7 @@ struct App {
         envmaps(options.max_envmaps),
         assets(options.assets.max_assets),
         models(memory),
+        denoiser(options.denoise_weights.value_or(denoise::default_weights_dir())),
         prefilters(prefilter_job_config(options)),
         turntables(turntable_job_config(options)),
         renders(render_job_config(options)) {}

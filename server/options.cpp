@@ -107,6 +107,10 @@ const std::vector<TextFlag>& text_flags() {
        add_load},
       {"web-dir", "DIR", "static dashboard served at / (default: the source tree's web/); the API keeps /api",
        false, [](Options& o, const std::string& v) { o.web_dir = v; }},
+      {"denoise-weights", "DIR",
+       "the denoiser's weights, Open Image Denoise's rt_*.tza files, for renders with\n\"denoise\" "
+       "(default: the installed ones, else the source tree's engine/denoise/weights)",
+       false, [](Options& o, const std::string& v) { o.denoise_weights = v; }},
       {"state-dir", "DIR",
        "uploaded maps, model assets and render jobs kept across restarts\n(default ./lightprobe-state)",
        false, set_state_dir},

@@ -46,7 +46,9 @@ struct Options {
   std::optional<std::filesystem::path> data_dir;
   std::vector<std::pair<std::string, std::string>> loads;  // --load NAME=PATH
   std::filesystem::path web_dir;                           // the dashboard, served at "/" (empty: none)
-  int threads = int(api::kThreads.fallback);               // 0 = all cores
+  // The denoiser's weights (engine/denoise/); absent: denoise::default_weights_dir().
+  std::optional<std::filesystem::path> denoise_weights;
+  int threads = int(api::kThreads.fallback);  // 0 = all cores
   // Budget for maps, their derived tables, images in flight and render results (see memory_budget.hpp).
   int64_t max_memory_mb = default_max_memory_mb();
   int64_t max_envmaps = kMaxEnvmaps.fallback;

@@ -20,8 +20,12 @@ struct QueuedRender {
 // pixel and its passes, and `replaced` the interrupted job the new one replaces under the same id. When the
 // queue is full, the stored record is put back as it was: removed for a new render, `replaced`'s again for a
 // continuation (unless another continuation took its place meanwhile).
+// A request with `denoise` is refused (503 denoiser_unavailable) by a server without the denoiser's weights.
 QueuedRender queue_render(App& app, RenderRecord record, api::RenderRequest request,
                           std::shared_ptr<const EnvMap> envmap, int64_t triangles, RenderImage image = {},
                           const RenderJob* replaced = nullptr);
+
+// Throws api::ApiError 503 denoiser_unavailable when the server's denoiser has no weights.
+void require_denoiser(const App& app);
 
 }  // namespace lp::server

@@ -34,10 +34,13 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       envmap_(std::move(envmap)),
       counters_(context.counters),
       scale_out_(std::move(context.scale_out)),
+      denoiser_(context.denoiser),
       earlier_stats_(record.stats),
       earlier_render_s_(record.render_s),
       image_(std::move(image.image)),
       passes_(std::move(image.passes)),
+      denoised_(image_ ? std::move(image.denoised) : nullptr),
+      denoise_s_(denoised_ ? image.denoise_s : std::nullopt),
       spp_done_(image_ ? record.spp_done : 0),
       ranges_done_(image_ ? record.ranges_done : std::vector<render::SampleRange>{}),
       stats_(record.stats),
@@ -45,13 +48,14 @@ RenderJob::RenderJob(RenderRecord record, api::RenderRequest request, std::share
       envmap_fingerprint_(record.envmap_fingerprint),
       model_hashes_(record.model_hashes),
       memory_(std::move(context.memory)),
-      files_(context.store, record.id, image_ ? record.image_file : "", request_.settings.passes) {
+      files_(context.store, record.id, image_ ? record.image_file : "", request_.settings.passes,
+             denoised_ ? record.denoise_s : std::nullopt) {
   set_work(request_.settings.spp, spp_done_);  // until run() counts in tiles
 }
 
 RenderImage RenderJob::image() const {
   std::lock_guard lock(mutex_);
-  return {image_, spp_done_, passes_};
+  return {image_, spp_done_, passes_, denoised_, denoise_s_};
 }
 
 int RenderJob::spp_done() const {
@@ -62,6 +66,7 @@ int RenderJob::spp_done() const {
 int64_t RenderJob::retained_bytes() const {
   std::lock_guard lock(mutex_);
   int64_t bytes = image_ ? int64_t(image_->data().size_bytes()) : 0;
+  if (denoised_) bytes += int64_t(denoised_->data().size_bytes());
   for (const auto& pass : passes_)
     if (pass) bytes += int64_t(pass->data().size_bytes());
   return bytes;
@@ -85,6 +90,7 @@ RenderRecord RenderJob::record(JobStatus status, const std::optional<JobError>& 
   r.error = error;
   r.elapsed_s = elapsed_s();
   r.image_file = files_.image_file();  // not under mutex_: a checkpoint holds the files' lock while it writes
+  r.denoise_s = files_.denoise_s();
   std::lock_guard lock(mutex_);
   r.spp_done = spp_done_;
   r.ranges_done = ranges_done_;
@@ -104,6 +110,8 @@ void RenderJob::publish(Image pixels, PassImages passes, int spp_done, render::R
                    earlier_stats_.rays + stats.rays - stats_.rays, earlier_render_s_ + render_s - render_s_);
   image_ = std::move(image);
   passes_ = std::move(passes);
+  denoised_.reset();  // of an earlier image
+  denoise_s_.reset();
   spp_done_ = spp_done;
   ranges_done_ = std::move(ranges_done);
   stats_ = {earlier_stats_.samples + stats.samples, earlier_stats_.rays + stats.rays};
@@ -155,9 +163,10 @@ bool RenderJob::run() {
     if (files_.keeps()) run_model_hashes_ = model_content_hashes(request_.scene);
     // An adaptive render's passes depend on the whole image so far: it is never split into ranges.
     const bool uniform = request_.settings.sampling == render::SamplingMode::Uniform;
-    const bool ended = scale_out_ && uniform  ? render_split()
-                       : ranges_done_.empty() ? render_here()
-                                              : render_ranges_here();
+    const bool rendered = scale_out_ && uniform  ? render_split()
+                          : ranges_done_.empty() ? render_here()
+                                                 : render_ranges_here();
+    const bool ended = rendered && (!request_.denoise || denoise_result());
     if (!ended) {
       release(interrupt_requested() ? "interrupted" : "cancelled");
       return false;
@@ -184,7 +193,7 @@ bool RenderJob::render_here() {
     spdlog::info("render {} continues after {} spp", id(), earlier_spp);
   }
   const int64_t tiles = renderer.tile_count();
-  set_work(tiles * s.spp, tiles * earlier_spp);
+  set_render_work(tiles * s.spp, tiles * earlier_spp);
   save_record();
   const auto start = Clock::now();
   int spp_done = earlier_spp;  // the passes' samples per pixel (an adaptive pass's are a mean)
@@ -244,7 +253,7 @@ bool RenderJob::render_split() {
   const auto& s = request_.settings;
   RangeRun run{done_ranges(), spp_done()};
   const auto items = render::ranges_outside(s.spp, scale_out_->item_spp, run.ranges);
-  set_work(s.spp, run.spp_done);
+  set_render_work(s.spp, run.spp_done);
   save_record();
   if (run.spp_done > 0) spdlog::info("render {} continues after {} spp", id(), run.spp_done);
   RenderCoordinator coordinator(*scale_out_, id());
@@ -268,7 +277,7 @@ bool RenderJob::render_ranges_here() {
   RangeRun run{done_ranges(), spp_done()};
   auto film = done_film();
   const int64_t tiles = renderer.tile_count();
-  set_work(tiles * s.spp, tiles * run.spp_done);
+  set_render_work(tiles * s.spp, tiles * run.spp_done);
   save_record();
   spdlog::info("render {} continues here after {} spp", id(), run.spp_done);
   for (const auto range : render::ranges_outside(s.spp, kRangeSpp, run.ranges)) {
@@ -287,9 +296,44 @@ bool RenderJob::render_ranges_here() {
   return true;
 }
 
+void RenderJob::set_render_work(int64_t total, int64_t done) {
+  render_work_ = total;
+  const int64_t denoise_work = request_.denoise ? (total + 8) / 9 : 0;  // a tenth of the whole
+  set_work(total + denoise_work, done);
+}
+
+bool RenderJob::denoise_result() {
+  using Clock = std::chrono::steady_clock;
+  if (!denoiser_) throw std::logic_error("a render to denoise has no denoiser");
+  const RenderImage done = image();
+  const int64_t denoise_work = (render_work_ + 8) / 9;
+  denoise::DenoiseOptions options;
+  options.progress = [&](double fraction) {
+    set_work(render_work_ + denoise_work, render_work_ + int64_t(fraction * double(denoise_work)));
+    return !cancel_flag().load() && !interrupt_requested();
+  };
+  const auto start = Clock::now();
+  std::shared_ptr<const Image> denoised;
+  try {
+    denoised = std::make_shared<const Image>(denoiser_->run(
+        {done.image.get(), done.pass(render::AuxPass::Albedo), done.pass(render::AuxPass::Normal)}, options));
+  } catch (const denoise::DenoiseCancelled&) {
+    return false;
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  {
+    std::lock_guard lock(mutex_);
+    denoised_ = std::move(denoised);
+    denoise_s_ = seconds;
+  }
+  spdlog::info("render {} denoised in {:.2f} s", id(), seconds);
+  checkpoint();
+  return true;
+}
+
 void RenderJob::describe(nlohmann::json& out) const {
   std::lock_guard lock(mutex_);
-  api::describe_render(out, request_, {spp_done_, stats_, render_s_, image_ != nullptr});
+  api::describe_render(out, request_, {spp_done_, stats_, render_s_, image_ != nullptr, denoise_s_});
 }
 
 }  // namespace lp::server

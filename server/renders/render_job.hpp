@@ -4,13 +4,16 @@
 // counts pixel samples per finished tile; the image and the statistics are published after every pass, and
 // with a state store the job keeps its record and image there after every pass, so a restart can continue it.
 // Split over Redis (or continuing such a render without Redis), it renders sample ranges instead, publishes
-// the image as each range is merged and keeps it every few seconds.
+// the image as each range is merged and keeps it every few seconds. A render that asks for `denoise`
+// denoises its colour once every sample is done, on the job's thread (the last tenth of its progress, and
+// cancelled like a pass), then publishes and keeps the denoised colour beside the image.
 #include <array>
 #include <memory>
 #include <mutex>
 #include <vector>
 
 #include "api/render_request.hpp"
+#include "engine/denoise/denoiser.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
 #include "engine/render/pass_schedule.hpp"
@@ -31,6 +34,7 @@ struct RenderJobContext {
   RenderCounters* counters = nullptr;  // the server's counters it adds each finished pass to; null: none
   MemoryReservation memory;            // its reservation in the budget (renders/render_memory.hpp)
   std::optional<ScaleOut> scale_out;   // splits it into work items on Redis (render_coordinator.hpp)
+  const denoise::Denoiser* denoiser = nullptr;  // for a request with `denoise`; null for a job that ended
 };
 
 class RenderJob : public Job {
@@ -77,6 +81,10 @@ class RenderJob : public Job {
   void publish(Image image, PassImages passes, int spp_done, render::RenderStats run_stats, double render_s,
                std::vector<render::SampleRange> ranges_done = {});
   void checkpoint();
+  // The work units of the render, and the total with the denoise's share.
+  void set_render_work(int64_t total, int64_t done);
+  // The colour of the finished render denoised, published and kept; false if a cancel or a stop ended it.
+  bool denoise_result();
   void keep_result_memory();  // the image of the passes done, then the record naming it
   int skip_done_passes(std::vector<render::RenderPass>& passes) const;
 
@@ -85,12 +93,16 @@ class RenderJob : public Job {
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
   RenderCounters* const counters_;
   const std::optional<ScaleOut> scale_out_;
+  const denoise::Denoiser* const denoiser_;
+  int64_t render_work_ = 0;                  // the work units of the render, before the denoise's
   const render::RenderStats earlier_stats_;  // of earlier runs
   const double earlier_render_s_;
 
   mutable std::mutex mutex_;
   std::shared_ptr<const Image> image_;
   PassImages passes_;
+  std::shared_ptr<const Image> denoised_;  // image_ denoised, once every sample is done
+  std::optional<double> denoise_s_;
   int spp_done_ = 0;
   std::vector<render::SampleRange> ranges_done_;  // see RenderRecord::ranges_done
   render::RenderStats stats_;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "api/api_error.hpp"
@@ -65,9 +66,9 @@ std::vector<uint8_t> aux_png(const Image& pass, AuxPass p, const ToneMap& tone) 
   return {};
 }
 
-std::vector<uint8_t> color_picture(const RenderImage& image, const api::PreviewParams& params,
-                                   const render::RenderSettings& s) {
-  const Image& color = *image.image;
+// The colour (or `color` in its place: the denoised one) with the alpha of a transparent background.
+std::vector<uint8_t> color_picture(const RenderImage& image, const Image& color,
+                                   const api::PreviewParams& params, const render::RenderSettings& s) {
   if (!transparent(s)) return write_image(color, params.format, params.tone);
   const Image& alpha = pass_image(image, AuxPass::Alpha);
   if (params.format == ImageFormat::Png)
@@ -91,6 +92,11 @@ std::vector<uint8_t> all_passes(const RenderImage& image, const render::RenderSe
   add(AuxPass::Albedo, "Albedo.", {"R", "G", "B"});
   add(AuxPass::Normal, "Ns.", {"X", "Y", "Z"});
   add(AuxPass::Depth, "Depth.", {"Z"});
+  if (image.denoised) {
+    const float* d = image.denoised->data().data();
+    channels.insert(channels.end(),
+                    {{"Denoised.R", d, 3}, {"Denoised.G", d + 1, 3}, {"Denoised.B", d + 2, 3}});
+  }
   return write_exr_channels(color.width(), color.height(), channels);
 }
 
@@ -105,25 +111,34 @@ std::vector<uint8_t> encode_render_picture(const RenderImage& image, const api::
           "format", fmt::format("pass={} is one EXR of every pass: ask for format=exr", api::kAllPassesName));
     return all_passes(image, settings);
   }
-  if (!pass.aux) return color_picture(image, params, settings);
+  if (pass.denoised) {
+    if (!image.denoised) throw std::logic_error("no denoised image to encode");
+    return color_picture(image, *image.denoised, params, settings);
+  }
+  if (!pass.aux) return color_picture(image, *image.image, params, settings);
   const Image& aux = pass_image(image, *pass.aux);
   if (params.format == ImageFormat::Png) return aux_png(aux, *pass.aux, params.tone);
   return write_image(aux, params.format, params.tone);
 }
 
 RenderImage fit_longest_side(const RenderImage& image, std::optional<int> longest) {
-  RenderImage out{
-      std::make_shared<const Image>(lp::fit_longest_side(*image.image, longest)), image.spp_done, {}};
+  const auto fit = [&](const Image& i) {
+    return std::make_shared<const Image>(lp::fit_longest_side(i, longest));
+  };
+  RenderImage out{fit(*image.image),
+                  image.spp_done,
+                  {},
+                  image.denoised ? fit(*image.denoised) : nullptr,
+                  image.denoise_s};
   for (size_t p = 0; p < image.passes.size(); ++p)
-    if (image.passes[p])
-      out.passes[p] = std::make_shared<const Image>(lp::fit_longest_side(*image.passes[p], longest));
+    if (image.passes[p]) out.passes[p] = fit(*image.passes[p]);
   return out;
 }
 
 int64_t render_picture_bytes(const api::RenderImagePass& pass, const api::PreviewParams& params,
                              const render::RenderSettings& s) {
   const int64_t one = encode_bytes(params.format, s.width, s.height);
-  if (pass.all) return one * int64_t(1 + s.passes.list().size());
+  if (pass.all) return one * int64_t(2 + s.passes.list().size());
   // An RGBA picture: its alpha's channel beside the colour; a mapped pass: its copy in [0, 1].
   return 2 * one + EnvMap::image_bytes(s.width, s.height);
 }

@@ -10,7 +10,10 @@
 //
 // pass=all (EXR only) names its channels as pbrt-v4's GBufferFilm where it has the pass and as Cycles'
 // passes where it does not: R, G, B (colour) and A (alpha, when the background is transparent; else
-// Alpha.A, a coverage over an opaque colour), Albedo.R/G/B, Ns.X/Y/Z (the shading normal), Depth.Z.
+// Alpha.A, a coverage over an opaque colour), Albedo.R/G/B, Ns.X/Y/Z (the shading normal), Depth.Z, and
+// Denoised.R/G/B once a render with `denoise` has its denoised colour.
+//
+// pass=denoised is that colour, encoded as the colour is (with its alpha on a transparent background).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -23,7 +26,8 @@
 namespace lp::server {
 
 // Throws api::ApiError 409 pass_not_rendered for a pass the render's settings do not ask for, and 400
-// invalid_field for pass=all in another format than EXR.
+// invalid_field for pass=all in another format than EXR. pass=denoised needs image.denoised (the route
+// answers its absence).
 std::vector<uint8_t> encode_render_picture(const RenderImage& image, const api::RenderImagePass& pass,
                                            const api::PreviewParams& params,
                                            const render::RenderSettings& settings);

@@ -69,6 +69,7 @@ nlohmann::json record_json(const RenderRecord& r) {
           {"spp_done", r.spp_done},
           {"sample_ranges_done", ranges_json(r.ranges_done)},
           {"image_file", r.image_file},
+          {"denoise_s", r.denoise_s ? nlohmann::json(*r.denoise_s) : nlohmann::json()},
           {"envmap_fingerprint", r.envmap_fingerprint},
           {"model_hashes", model_hashes_json(r.model_hashes)},
           {"elapsed_s", r.elapsed_s},
@@ -91,6 +92,7 @@ RenderRecord parse_render_record(const nlohmann::json& j) {
     r.error = JobError{e.at("code").get<std::string>(), e.at("message").get<std::string>()};
   r.spp_done = j.at("spp_done").get<int>();
   r.image_file = j.at("image_file").get<std::string>();
+  if (const auto d = j.find("denoise_s"); d != j.end() && !d->is_null()) r.denoise_s = d->get<double>();
   r.ranges_done = parse_ranges(j.value("sample_ranges_done", nlohmann::json::array()), r.spp_done);
   r.envmap_fingerprint = j.at("envmap_fingerprint").get<std::string>();
   r.model_hashes = parse_model_hashes(j.value("model_hashes", nlohmann::json::object()));
@@ -99,6 +101,8 @@ RenderRecord parse_render_record(const nlohmann::json& j) {
   r.render_s = j.at("render_s").get<double>();
   if (r.spp_done < 0 || (r.spp_done > 0) == r.image_file.empty())
     throw std::invalid_argument("the samples done and the image file disagree");
+  if (r.denoise_s && r.image_file.empty())
+    throw std::invalid_argument("a denoised image is named without its image");
   if (r.image_file.find('/') != std::string::npos)
     throw std::invalid_argument("the image file is not a plain name");
   return r;

@@ -25,7 +25,10 @@ struct RenderRecord {
   // The sample ranges in the image when they are not [0, spp_done): a render split over Redis merges
   // ranges as they arrive. Empty for a render that ran here.
   std::vector<render::SampleRange> ranges_done;
-  std::string image_file;          // in the renders folder; empty before the first pass
+  std::string image_file;  // in the renders folder; empty before the first pass
+  // Set when the denoised colour is kept beside image_file (RenderFiles::denoised_file): the seconds the
+  // denoise took.
+  std::optional<double> denoise_s;
   std::string envmap_fingerprint;  // envmap_content_hash() of the map; empty before the first pass
   ModelHashes model_hashes;        // of the mesh objects' models; empty before the first pass
   double elapsed_s = 0;

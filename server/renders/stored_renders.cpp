@@ -28,7 +28,7 @@ std::shared_ptr<RenderJob> restore_render(App& app, RenderRecord record) {
   // The image stays with the job, so it is held from the budget like a finished render's.
   MemoryReservation memory;
   if (!record.image_file.empty())
-    memory = app.memory.reserve(rendered_image_bytes(request.settings), MemoryUse::Held,
+    memory = app.memory.reserve(rendered_image_bytes(request.settings, request.denoise), MemoryUse::Held,
                                 fmt::format("the image of render {}", record.id));
   auto image = RenderFiles::read_image(*app.state, record, request);
   if (!image.image) {

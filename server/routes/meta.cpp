@@ -10,7 +10,10 @@ void register_meta_routes(Router& router, App& app) {
     const nlohmann::json memory = {{"budget_bytes", app.memory.capacity()},
                                    {"used_bytes", app.memory.used()},
                                    {"cache_bytes", app.memory.used(MemoryUse::Cache)}};
-    send_json(res, {{"status", "ok"}, {"version", LIGHTPROBE_VERSION}, {"memory", memory}});
+    send_json(res, {{"status", "ok"},
+                    {"version", LIGHTPROBE_VERSION},
+                    {"memory", memory},
+                    {"denoiser", {{"available", app.denoiser.available()}}}});
   });
   router.get(std::string(kReadyPath), [&app](const httplib::Request&, httplib::Response& res) {
     if (app.ready.load())

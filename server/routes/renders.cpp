@@ -81,6 +81,20 @@ void list(const App& app, httplib::Response& res) {
                   {"max_queued", app.options.jobs.max_queued}});
 }
 
+// 409 pass_not_rendered for pass=denoised of a render without its denoised colour.
+void require_denoised(const RenderJob& job, const RenderImage& image) {
+  if (image.denoised) return;
+  if (!job.request().denoise)
+    throw api::ApiError(
+        api::ErrorCode::PassNotRendered,
+        fmt::format("render '{}' did not ask for \"denoise\": it has no denoised image", job.id()));
+  throw api::ApiError(
+      api::ErrorCode::PassNotRendered,
+      fmt::format("render '{}' is {} and its denoised image is not ready: it is made once every "
+                  "sample is done (the status's \"denoised\" says when)",
+                  job.id(), enum_name(job.status())));
+}
+
 void image(const App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_render(app, path_param(req, 1));
   const auto params = api::parse_preview_params(req.params, ImageFormat::Png, job->request().tone_mapping);
@@ -90,6 +104,7 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
     throw api::ApiError(
         api::ErrorCode::NoImageYet,
         fmt::format("render '{}' is {} and has no finished pass yet", job->id(), enum_name(job->status())));
+  if (pass.denoised) require_denoised(*job, current);
   const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
   const RenderImage pictures = size ? fit_longest_side(current, size) : current;
   const auto& settings = job->request().settings;

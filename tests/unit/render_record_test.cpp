@@ -43,6 +43,20 @@ TEST(RenderRecord, ReadsBackTheHashesOfItsModels) {
   }
 }
 
+TEST(RenderRecord, ReadsBackItsDenoisedImage) {
+  RenderRecord r = split_record();
+  EXPECT_FALSE(parse_render_record(record_json(r)).denoise_s);
+  r.denoise_s = 1.25;
+  auto json = record_json(r);
+  EXPECT_EQ(parse_render_record(json).denoise_s, 1.25);
+  json.erase("denoise_s");  // a record of an earlier version
+  EXPECT_FALSE(parse_render_record(json).denoise_s);
+  r.spp_done = 0;
+  r.ranges_done.clear();
+  r.image_file.clear();
+  EXPECT_THROW(parse_render_record(record_json(r)), std::invalid_argument);  // denoised, without an image
+}
+
 TEST(RenderRecord, ARecordWithoutRangesIsTheFirstSamples) {
   auto json = record_json(split_record());
   json.erase("sample_ranges_done");
