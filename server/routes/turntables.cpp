@@ -18,6 +18,7 @@
 #include "engine/image/resize.hpp"
 #include "engine/image/webp.hpp"
 #include "server/http/reserved_content.hpp"
+#include "server/renders/queue_render.hpp"
 #include "server/renders/scene_meshes.hpp"
 #include "server/routes/job_answers.hpp"
 #include "server/routes/routes.hpp"
@@ -56,15 +57,16 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
   if (!envmap)
     throw api::invalid_field("envmap",
                              "no environment map '" + api::excerpt(request.render.envmap) + "' is loaded");
+  if (request.render.denoise) require_denoiser(app);
   const int64_t triangles = resolve_meshes(request.render.scene, app);
   auto cameras = turntable_cameras(request);
   const auto& s = request.render.settings;
   auto memory = app.memory.reserve(
       turntable_bytes(request, triangles), MemoryUse::Transient,
       fmt::format("a turntable of {} frames of {}x{}", request.turntable.frames, s.width, s.height));
-  auto job = std::make_shared<TurntableJob>(app.turntables.new_id(), std::move(request), std::move(cameras),
-                                            envmap->map,
-                                            TurntableJobContext{std::move(memory), &app.render_counters});
+  auto job = std::make_shared<TurntableJob>(
+      app.turntables.new_id(), std::move(request), std::move(cameras), envmap->map,
+      TurntableJobContext{std::move(memory), &app.render_counters, &app.denoiser});
   const nlohmann::json status = job->status_json();
   if (!app.turntables.submit(job)) return send_queue_full(app.turntables, "turntables", res);
   send_accepted("/api/v1/turntables/" + job->id(), status, res);

@@ -33,7 +33,7 @@ std::vector<render::Camera> turntable_cameras(const api::TurntableRequest& reque
 
 int64_t turntable_bytes(const api::TurntableRequest& request, int64_t triangles) {
   const auto& s = request.render.settings;
-  return running_render_bytes(s, triangles) +
+  return running_render_bytes(s, triangles, request.render.denoise) +
          request.turntable.frames * EnvMap::image_bytes(s.width, s.height);
 }
 
@@ -44,6 +44,7 @@ TurntableJob::TurntableJob(std::string id, api::TurntableRequest request, std::v
       cameras_(std::move(cameras)),
       envmap_(std::move(envmap)),
       counters_(context.counters),
+      denoiser_(context.denoiser),
       memory_(std::move(context.memory)) {
   set_work(request_.turntable.frames, 0);  // until run() counts in tiles
 }
@@ -74,8 +75,11 @@ std::shared_ptr<const Image> TurntableJob::render_frame(int index, int64_t& fram
   render::SceneDesc scene = r.scene;
   scene.camera = cameras_[size_t(index)];
   render::Renderer renderer(scene, r.lighting, r.settings, envmap_);
+  // A frame's work: its tile-samples, and a tenth of the whole for its denoise.
+  const int64_t render_work = int64_t(renderer.tile_count()) * r.settings.spp;
+  const int64_t denoise_work = r.denoise ? (render_work + 8) / 9 : 0;
   if (frame_work == 0) {
-    frame_work = int64_t(renderer.tile_count()) * r.settings.spp;
+    frame_work = render_work + denoise_work;
     set_work(frame_work * request_.turntable.frames, frame_work * index);
   }
   const auto start = Clock::now();
@@ -87,7 +91,27 @@ std::shared_ptr<const Image> TurntableJob::render_frame(int index, int64_t& fram
     const render::RenderStats stats = renderer.stats();
     counters_->add(stats.samples, stats.rays, std::chrono::duration<double>(Clock::now() - start).count());
   }
-  return std::make_shared<const Image>(renderer.image());
+  if (!r.denoise) return std::make_shared<const Image>(renderer.image());
+  return denoise_frame(renderer, frame_work * index + render_work, denoise_work,
+                       frame_work * request_.turntable.frames);
+}
+
+std::shared_ptr<const Image> TurntableJob::denoise_frame(const render::Renderer& renderer, int64_t done,
+                                                         int64_t work, int64_t total) {
+  if (!denoiser_) throw std::logic_error("a turntable to denoise has no denoiser");
+  const Image color = renderer.image();
+  const Image albedo = renderer.image(render::AuxPass::Albedo);
+  const Image normal = renderer.image(render::AuxPass::Normal);
+  denoise::DenoiseOptions options;
+  options.progress = [&](double fraction) {
+    set_work(total, done + int64_t(fraction * double(work)));
+    return !cancel_flag().load();
+  };
+  try {
+    return std::make_shared<const Image>(denoiser_->run({&color, &albedo, &normal}, options));
+  } catch (const denoise::DenoiseCancelled&) {
+    return nullptr;
+  }
 }
 
 bool TurntableJob::run() {
@@ -114,6 +138,7 @@ void TurntableJob::describe(nlohmann::json& out) const {
   out["width"] = s.width;
   out["height"] = s.height;
   out["spp"] = s.spp;
+  out["denoise"] = request_.render.denoise;
   out["envmap"] = request_.render.envmap;
   out["cameras"] = api::describe_turntable_cameras(cameras_);
 }

@@ -4,15 +4,18 @@
 // plus the part of the current one. The cameras are placed when the job is made (the models are loaded
 // then), so the status lists them from the start. Finished frames are kept in memory, in the budget
 // reserved for all of them when the job was accepted; nothing is kept across restarts (a turntable is
-// made again by a new request).
+// made again by a new request). With `denoise` (a turntable's default), each frame is its colour denoised
+// after its last pass, counted in the frame's progress as a tenth of it.
 #include <memory>
 #include <mutex>
 #include <vector>
 
 #include "api/turntable_request.hpp"
 #include "engine/core/memory_budget.hpp"
+#include "engine/denoise/denoiser.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
+#include "engine/render/renderer.hpp"
 #include "server/jobs/job.hpp"
 #include "server/renders/render_counters.hpp"
 
@@ -28,6 +31,7 @@ int64_t turntable_bytes(const api::TurntableRequest& request, int64_t triangles)
 struct TurntableJobContext {
   MemoryReservation memory;            // turntable_bytes, shrunk to the frames kept when the job ends
   RenderCounters* counters = nullptr;  // the server's counters each finished frame adds to; null: none
+  const denoise::Denoiser* denoiser = nullptr;  // for a request with `denoise`
 };
 
 class TurntableJob : public Job {
@@ -49,11 +53,16 @@ class TurntableJob : public Job {
 
  private:
   std::shared_ptr<const Image> render_frame(int index, int64_t& frame_work);
+  // The frame's colour denoised; nullptr when a cancel stopped it. `work` is the denoise's share of the
+  // job's `total` work units, `done` those done before it.
+  std::shared_ptr<const Image> denoise_frame(const render::Renderer& renderer, int64_t done, int64_t work,
+                                             int64_t total);
 
   const api::TurntableRequest request_;
   const std::vector<render::Camera> cameras_;
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
   RenderCounters* const counters_;
+  const denoise::Denoiser* const denoiser_;
   MemoryReservation memory_;
 
   mutable std::mutex mutex_;
