@@ -4,8 +4,10 @@
 #include <tbb/global_control.h>
 
 #include <atomic>
+#include <memory>
 #include <optional>
 
+#include "api/api_error.hpp"
 #include "api/parameters.hpp"
 #include "cli/command.hpp"
 #include "cli/help.hpp"
@@ -17,6 +19,7 @@
 #include "cli/scene_file.hpp"
 #include "cli/turntable_files.hpp"
 #include "cli/turntable_options.hpp"
+#include "engine/denoise/denoiser.hpp"
 #include "engine/render/pass_schedule.hpp"
 #include "engine/render/renderer.hpp"
 
@@ -61,6 +64,25 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
                                             size_t(threads));
 }
 
+// The denoiser of the installed or source tree's weights; a 503 denoiser_unavailable without them.
+std::unique_ptr<denoise::Denoiser> available_denoiser() {
+  auto denoiser = std::make_unique<denoise::Denoiser>();
+  if (!denoiser->available())
+    throw api::ApiError(
+        api::ErrorCode::DenoiserUnavailable,
+        fmt::format("no denoiser weights in {} (set LIGHTPROBE_DENOISE_WEIGHTS, or render with "
+                    "--no-denoise)",
+                    denoiser->weights_dir().string()));
+  return denoiser;
+}
+
+// The finished render's colour denoised with its albedo and normal.
+Image denoised(const render::Renderer& renderer, const denoise::Denoiser& denoiser) {
+  const Image color = renderer.image(), albedo = renderer.image(render::AuxPass::Albedo),
+              normal = renderer.image(render::AuxPass::Normal);
+  return denoiser.run({&color, &albedo, &normal});
+}
+
 // Renders the frames (the same scene seen by each camera) one after the other, with one progress over
 // all of them, handing each picture (`image` says its format) to `done` as it finishes.
 template <class Done>
@@ -68,6 +90,7 @@ void render_frames(const SceneRender& r, const std::vector<render::Camera>& came
                    const api::PreviewParams& image, ProgressStyle style, Done&& done) {
   const render::RenderSettings& s = r.request.settings;
   const int64_t frames = int64_t(cameras.size());
+  const auto denoiser = r.request.denoise ? available_denoiser() : nullptr;
   std::optional<ProgressBar> bar;
   render::SceneDesc scene = r.request.scene;
   for (int64_t i = 0; i < frames; ++i) {
@@ -82,7 +105,8 @@ void render_frames(const SceneRender& r, const std::vector<render::Camera>& came
     const std::atomic<bool> never{false};
     for (const render::RenderPass& pass : render::render_passes(s, s.spp))
       renderer.render(pass, never, [&bar, spp = pass.spp] { bar->advance(spp); });
-    done(i, encode_picture(renderer, s, image));
+    done(i, encode_picture(r.request.denoise ? denoised(renderer, *denoiser) : renderer.image(), renderer, s,
+                           image));
   }
   if (bar) bar->finish();
 }
@@ -107,7 +131,7 @@ void run(Arguments& args) {
   const SceneRender scene =
       read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
-  refuse_unwritten_passes(scene.request.settings);
+  refuse_unwritten_passes(scene.request);
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
     render_frames(scene, out.cameras(), image, progress,
@@ -130,7 +154,7 @@ Command render_command() {
           kSynopsis,
           "path-trace a scene (the JSON body of POST /api/v1/renders) or a framed model to an image or a "
           "turntable",
-          {"quiet", "ground"},
+          {"quiet", kGroundSwitch, kDenoiseSwitch, kNoDenoiseSwitch},
           help,
           run};
 }

@@ -1,6 +1,7 @@
 #pragma once
-// The render option that is no plain top-level field of the request: --ground, a shadow-catcher ground
-// object added to the scene, placed under the bounded objects.
+// The render options that are no plain top-level field of the request: --ground, a shadow-catcher ground
+// object added to the scene, placed under the bounded objects; --denoise and --no-denoise, the request's
+// `denoise` as a switch either way (its default is the request's: off for a render, on for a turntable).
 #include <string>
 
 #include "cli/arguments.hpp"
@@ -14,6 +15,10 @@ struct RequestOptions {
 };
 
 RequestOptions take_request_options(Arguments& args);
+
+// The switches take_request_options takes, for the command's list of switches.
+inline constexpr std::string_view kGroundSwitch = "ground", kDenoiseSwitch = "denoise",
+                                  kNoDenoiseSwitch = "no-denoise";
 
 // The help lines of the request fields the render command documents by name beyond the settings.
 std::string request_options_help();

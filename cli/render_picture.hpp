@@ -6,15 +6,17 @@
 #include <vector>
 
 #include "api/preview_params.hpp"
+#include "api/render_request.hpp"
 #include "engine/render/renderer.hpp"
 
 namespace lp::cli {
 
-std::vector<uint8_t> encode_picture(const render::Renderer& renderer, const render::RenderSettings& settings,
-                                    const api::PreviewParams& params);
+// `color` is the renderer's colour, or that colour denoised.
+std::vector<uint8_t> encode_picture(const Image& color, const render::Renderer& renderer,
+                                    const render::RenderSettings& settings, const api::PreviewParams& params);
 
-// Refuses (bad_request) a render whose settings ask for passes the tool does not write: all but the alpha
-// of a transparent background.
-void refuse_unwritten_passes(const render::RenderSettings& settings);
+// Refuses (bad_request) a render whose request asks for passes the tool does not write: all but the alpha
+// of a transparent background, and the albedo and normal a denoise takes.
+void refuse_unwritten_passes(const api::RenderRequest& request);
 
 }  // namespace lp::cli
