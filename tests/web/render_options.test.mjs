@@ -1,7 +1,8 @@
 // The render panel's picture options in Chromium against the real server, each seen to act: a
 // transparent background leaves the corners' alpha 0, a colour background fills them with that colour,
 // a shadow-catcher ground under a model adds coverage only below it, and the passes asked for each get
-// a tab that shows that pass. The controls take their choices from the API's document.
+// a tab that shows that pass, and a denoised render is shown beside its raw colour, smoother. The controls
+// take their choices from the API's document.
 // Run: LIGHTPROBE_SERVER_BIN=build/bin/lightprobe-server node --test
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -133,4 +134,33 @@ test('the passes asked for each get a tab; the albedo pass of the diffuse sphere
   await elementScreenshot(page, '#renders-panel', 'render-passes');
   for (const name of names) await page.locator(`#render-pass-choices [value=${name}]`).uncheck();
   assert.deepEqual(browser.errors, []);
+});
+
+// The mean difference of the green channel between horizontal neighbours: noise, and the edges.
+function roughness(image) {
+  let sum = 0;
+  for (let y = 0; y < image.height; ++y)
+    for (let x = 1; x < image.width; ++x) sum += Math.abs(image.data[4 * (y * image.width + x) + 1] - image.data[4 * (y * image.width + x - 1) + 1]);
+  return sum / (image.height * (image.width - 1));
+}
+
+test('denoise: the finished render shows its denoised colour beside the raw one, smoother', async (t) => {
+  await form().locator('[name=preset]').selectOption('sphere');
+  await form().locator('[name=denoise]').check();
+  const { id, body } = await renderShown(page, { width: 64, height: 64, spp: 2 });
+  assert.equal(body.denoise, true);
+  await waitForImage(page, '#render-denoised img', 64);
+  assert.ok(await page.locator('#render-denoised').isVisible());
+  assert.match(await page.locator('#render-denoised figcaption').textContent(), /^denoised · [\d.]+ s$/);
+  const status = await (await fetch(`${server.base}/api/v1/renders/${id}`)).json();
+  assert.equal(status.denoised.ready, true);
+  assert.deepEqual(status.passes, ['albedo', 'normal']);
+  const raw = await renderPixels(page, `/renders/${id}/image`);
+  const denoised = await pixelsOf(page, '#render-denoised img');
+  t.diagnostic(`neighbour difference of the 8-bit green: raw ${roughness(raw).toFixed(2)}, denoised ${roughness(denoised).toFixed(2)}`);
+  assert.ok(roughness(denoised) < 0.5 * roughness(raw), `roughness raw ${roughness(raw)}, denoised ${roughness(denoised)}`);
+  await elementScreenshot(page, '#renders-panel', 'render-denoised');
+  await form().locator('[name=denoise]').uncheck();
+  await renderShown(page, { width: 32, height: 32, spp: 1 });
+  assert.ok(await page.locator('#render-denoised').isHidden(), 'a render without denoise shows none');
 });

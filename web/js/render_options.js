@@ -1,11 +1,12 @@
 // The picture options of a render that the server's own document names: the tone mapper, the
 // background (the map, transparent, or a colour), a ground under an uploaded model (optionally a shadow
-// catcher), and the passes accumulated beside the colour. A field the document does not name stays
+// catcher), the passes accumulated beside the colour, and the denoise (its result shown beside the raw
+// render). A field the document does not name stays
 // hidden and is never sent, so the page asks only what the server accepts.
 import { el } from './dom.js';
 import { apiDocument, componentFields, oneOfTypes, offerChoices, queryParameter, schemaOf } from './openapi.js';
 
-const offered = { tone_mapping: false, background: false, ground: false, passes: false, imageToneMapping: false };
+const offered = { tone_mapping: false, background: false, ground: false, passes: false, denoise: false, imageToneMapping: false };
 
 // sRGB (as a colour input gives it, #rrggbb) to linear RGB, the request's colours.
 export function linearRgb(hex) {
@@ -42,6 +43,7 @@ export async function offerRenderOptions(form) {
   document.querySelector('#render-pass-choices').replaceChildren(...passChoices(passes));
   show(form, 'passes', passes.length > 0);
   show(form, 'ground', oneOfTypes(doc, 'RenderObject').includes('ground'));
+  show(form, 'denoise', schemaOf(doc, fields.denoise)?.type === 'boolean');
   offered.imageToneMapping = Boolean(queryParameter(doc, '/renders/{id}/image', 'tone_mapping'));
   return offered;
 }
@@ -63,6 +65,7 @@ export function renderOptionFields(form) {
   if (offered.background) out.background = form.background.value === 'colour' ? linearRgb(form.background_colour.value) : form.background.value;
   const passes = chosenPasses(form);
   if (offered.passes && passes.length) out.passes = passes;
+  if (offered.denoise && form.denoise.checked) out.denoise = true;
   return out;
 }
 

@@ -1,7 +1,8 @@
 // One render job followed on the page: through its server-sent events (polling when the stream is
 // refused or drops), its progress bar, status and figures, the camera it resolved and its warnings,
 // the image refreshed after every pass, the passes it accumulates beside the colour (one shown at a
-// time), and Cancel. The Renders and Models panels each have one.
+// time), its denoised colour beside the raw one once it is ready, and Cancel. The Renders and Models
+// panels each have one.
 import { api, errorOf, loadImage, API } from './api.js';
 import { el, num, bigNum, busy, showError } from './dom.js';
 import { renderImageUrls } from './render_compare.js';
@@ -19,6 +20,7 @@ function figures(job) {
     ['rays/s', bigNum(job.rays_per_s)],
     ['scene', `${job.scene.preset ?? `${job.scene.objects} objects`} · ${job.lighting_mode} · ${job.envmap}`],
   ];
+  if (job.denoised) items.push(['denoise', job.denoised.ready ? `${num(job.denoised.seconds, 3)} s` : 'after the last pass']);
   if (job.camera) items.push(['camera', `${vec(job.camera.position)} → ${vec(job.camera.look_at)} · ${num(job.camera.fov_deg, 3)}°`]);
   if (job.error) items.push(['error', `${job.error.code}: ${job.error.message}`]);
   return items;
@@ -31,7 +33,7 @@ export function showWarnings(box, warnings = []) {
 }
 
 // `parts`: the elements it fills ({panel, image, downloads, bar, status, cancel, stats, warnings, and
-// optionally passes: the pass tabs}), `picture()` how the image is shown ({exposure, tone_mapping}),
+// optionally passes: the pass tabs, and denoised: a figure with an img and a figcaption}), `picture()` how the image is shown ({exposure, tone_mapping}),
 // `passesOf(job)` the passes a job accumulates beside the colour, `changed()` called as the job
 // advances (at most once a second) and when it ends.
 export function renderView(parts, { picture, passesOf = () => [], changed = () => {} }) {
@@ -64,6 +66,22 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
       .catch(fail);
   }
 
+  // The denoised colour beside the raw image, once the job has it; hidden otherwise.
+  function showDenoised(job) {
+    const figure = parts.denoised;
+    if (!figure) return;
+    const ready = Boolean(job.denoised?.ready) && watched && watched.id === job.id;
+    figure.hidden = !ready;
+    if (!ready) return figure.querySelector('img').removeAttribute('src');
+    const { png } = renderImageUrls(job.id, { ...picture(), pass: 'denoised' });
+    figure.querySelector('figcaption').textContent = `denoised · ${num(job.denoised.seconds, 3)} s`;
+    const img = figure.querySelector('img');
+    if (img.dataset.source === png) return;
+    img.dataset.source = png;
+    const current = () => watched && watched.id === job.id;
+    loadImage(img, png, current).catch(fail);
+  }
+
   // A tab per pass of the job (the colour first), the one shown pressed; hidden without passes.
   function showPassTabs(job) {
     if (!parts.passes) return;
@@ -92,6 +110,7 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
     showWarnings(parts.warnings, job.warnings);
     showPassTabs(job);
     showImage(job);
+    showDenoised(job);
   }
 
   function stop() {
@@ -158,7 +177,7 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
 
   // The image again at the current exposure and tone mapper.
   function refresh() {
-    if (watched) api(`/renders/${watched.id}`).then((job) => showImage(job, true)).catch(fail);
+    if (watched) api(`/renders/${watched.id}`).then((job) => { showImage(job, true); showDenoised(job); }).catch(fail);
   }
 
   // Follows no job and shows none.
@@ -177,6 +196,7 @@ export function renderView(parts, { picture, passesOf = () => [], changed = () =
       parts.passes.hidden = true;
       parts.passes.replaceChildren();
     }
+    if (parts.denoised) parts.denoised.hidden = true;
   }
 
   parts.cancel.addEventListener('click', cancel);

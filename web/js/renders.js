@@ -103,7 +103,7 @@ export function initRenders() {
   view = renderView({
     panel: panel(), image: $('#render-image'), downloads: $('#render-image-downloads'), bar: $('#render-progress'),
     status: $('#render-status'), cancel: $('#render-cancel'), stats: $('#render-stats'), warnings: $('#render-warnings'),
-    passes: $('#render-passes'),
+    passes: $('#render-passes'), denoised: $('#render-denoised'),
   }, { picture, passesOf: (job) => (Array.isArray(job.passes) ? job.passes.filter((p) => p !== 'color') : requestedPasses.get(job.id) ?? []), changed: refreshJobs });
   form.addEventListener('submit', submit);
   form.exposure.addEventListener('change', () => view.refresh());
