@@ -93,10 +93,11 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
   const RenderImage pictures = size ? fit_longest_side(current, size) : current;
   const auto& settings = job->request().settings;
-  auto memory = app.memory.reserve(render_picture_bytes(pass, params, settings), MemoryUse::Transient,
-                                   std::string("encoding a render as ") + enum_name(params.format));
+  auto memory = app.memory.reserve(
+      api::render_picture_bytes(pass, params, settings.width, settings.height, settings.passes.list().size()),
+      MemoryUse::Transient, std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  send_reserved(res, encode_render_picture(pictures, pass, params, settings), format_mime_type(params.format),
+  send_reserved(res, api::encode_render_picture(pictures_of(pictures, settings), pass, params), format_mime_type(params.format),
                 std::move(memory));
 }
 

@@ -1,6 +1,6 @@
 // Backgrounds, passes and the ground through the real server: a transparent render's corner has alpha 0
 // and its sphere alpha 1 in the alpha pass, the RGBA PNG (straight alpha) and the RGBA EXR
-// (premultiplied); the albedo, normal and depth passes of a white sphere; pass=all as one EXR whose
+// (premultiplied), the RGBA WebP and its thumbnail, the JPEG over white; the albedo, normal and depth passes of a white sphere; pass=all as one EXR whose
 // channels OpenEXR reads by name; a shadow catcher's alpha; and the refusals (a pass not asked for, pass=all
 // outside EXR, bad fields).
 #include <ImfChannelList.h>
@@ -9,6 +9,7 @@
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
 #include <stb_image.h>
+#include <webp/decode.h>
 
 #include <cmath>
 #include <fstream>
@@ -139,6 +140,70 @@ TEST(RenderPassesApi, ATransparentRenderHasAlphaZeroInItsCornerAndOneOnTheSphere
   EXPECT_EQ(exr.at("A")[0], 0.0f);
   EXPECT_EQ(exr.at("R")[0], 0.0f);  // premultiplied: nothing where nothing is
   EXPECT_EQ(exr.at("A")[size_t(c) * size_t(width) + size_t(c)], 1.0f);
+}
+
+// 8-bit RGBA of a PNG, WebP or JPEG (RGB: alpha 255), decoded by stb or libwebp.
+struct Rgba8 {
+  int width = 0, height = 0;
+  bool has_alpha = false;
+  std::vector<uint8_t> bytes;
+  const uint8_t* at(int x, int y) const { return &bytes[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+};
+
+Rgba8 decode_webp(const Reply& r) {
+  Rgba8 out;
+  const auto* data = reinterpret_cast<const uint8_t*>(r.body.data());
+  WebPBitstreamFeatures features;
+  if (WebPGetFeatures(data, r.body.size(), &features) != VP8_STATUS_OK) return out;
+  out.has_alpha = features.has_alpha;
+  uint8_t* rgba = WebPDecodeRGBA(data, r.body.size(), &out.width, &out.height);
+  if (!rgba) return out;
+  out.bytes.assign(rgba, rgba + size_t(out.width) * size_t(out.height) * 4);
+  WebPFree(rgba);
+  return out;
+}
+
+Rgba8 decode_stb(const Reply& r) {
+  Rgba8 out;
+  int channels = 0;
+  stbi_uc* rgba = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(r.body.data()), int(r.body.size()),
+                                        &out.width, &out.height, &channels, 4);
+  if (!rgba) return out;
+  out.has_alpha = channels == 4;
+  out.bytes.assign(rgba, rgba + size_t(out.width) * size_t(out.height) * 4);
+  stbi_image_free(rgba);
+  return out;
+}
+
+// WebP keeps the alpha of a transparent render, at full size and as a thumbnail; JPEG, which has none,
+// shows the PNG's RGBA over white: the corner white, the sphere's centre the PNG's colour.
+TEST(RenderPassesApi, ATransparentRenderKeepsItsAlphaInWebpAndIsOverWhiteInJpeg) {
+  const std::string id = rendered(sphere_body({{"background", "transparent"}}));
+  const int c = kSize / 2;
+  const std::string image = "/api/v1/renders/" + id + "/image?format=";
+  for (const std::string query : {"webp", "webp&size=17"}) {
+    SCOPED_TRACE(query);
+    const Reply r = get(image + query);
+    ASSERT_EQ(r.status, 200) << r.body;
+    EXPECT_EQ(r.type(), "image/webp");
+    const Rgba8 webp = decode_webp(r);
+    ASSERT_FALSE(webp.bytes.empty());
+    EXPECT_TRUE(webp.has_alpha);
+    const int m = webp.width / 2;
+    EXPECT_EQ(webp.at(0, 0)[3], 0);  // the map: transparent
+    EXPECT_EQ(webp.at(webp.width - 1, webp.height - 1)[3], 0);
+    EXPECT_EQ(webp.at(m, m)[3], 255);  // the sphere: opaque
+    EXPECT_GT(webp.at(m, m)[0], 100);  // lit, straight colour
+  }
+
+  const Rgba8 png = decode_stb(get(image + "png"));
+  const Rgba8 jpeg = decode_stb(get(image + "jpeg"));
+  ASSERT_EQ(jpeg.width, kSize);
+  EXPECT_FALSE(jpeg.has_alpha);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_GE(jpeg.at(0, 0)[k], 250);  // white, up to JPEG's loss
+    EXPECT_NEAR(jpeg.at(c, c)[k], png.at(c, c)[k], 6);
+  }
 }
 
 TEST(RenderPassesApi, AlbedoNormalAndDepthOfAWhiteSphereAndEveryPassInOneExr) {
