@@ -35,21 +35,12 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-// A worker renders the work items of other servers' renders and takes none of its own.
-void refuse_on_worker(const App& app) {
-  if (app.options.scale_out.role == ServerRole::Worker)
-    throw api::ApiError(
-        api::ErrorCode::WorkerOnly,
-        "this server runs with --role worker: it renders work items of other servers' renders "
-        "and takes no render of its own; send it to a server with --role api or both");
-}
-
 std::string render_url(const RenderJob& job) {
   return "/api/v1/renders/" + job.id();
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
-  refuse_on_worker(app);
+  refuse_on_worker(app, "render");
   RenderRecord record;
   record.id = app.renders.new_id();
   record.request = api::parse_json_object(req.body);
@@ -65,7 +56,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
 }
 
 void resume(App& app, const httplib::Request& req, httplib::Response& res) {
-  refuse_on_worker(app);
+  refuse_on_worker(app, "render");
   const auto queued = resume_render(app, find_render(app, path_param(req, 1)));
   if (!queued.job) return send_queue_full(app.renders, "renders", res);
   send_accepted(render_url(*queued.job), queued.status, res);

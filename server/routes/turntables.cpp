@@ -51,6 +51,7 @@ MemoryReservation reserve_frames(App& app, const TurntableJob& job, size_t frame
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
+  refuse_on_worker(app, "turntable");
   auto request = api::parse_turntable_request(api::parse_json_object(req.body), app.options.limits);
   const auto envmap = app.envmaps.find(request.render.envmap);
   if (!envmap)

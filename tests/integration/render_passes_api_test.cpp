@@ -35,14 +35,7 @@ using test::Reply;
 constexpr int kSize = 33;  // odd: the centre pixel looks at the sphere's nearest point
 
 test::ServerProcess& server() {
-  static test::ServerProcess s;
-  static const bool uploaded = [] {
-    const Reply up = test::upload_white_map(*s.client(), "white");
-    EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;
-    return true;
-  }();
-  (void)uploaded;
-  return s;
+  return test::white_map_server();
 }
 
 Reply get(const std::string& path) {
