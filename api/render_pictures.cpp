@@ -66,7 +66,8 @@ std::vector<uint8_t> over_white(std::span<const uint8_t> rgba) {
   std::vector<uint8_t> rgb(rgba.size() / 4 * 3);
   for (size_t i = 0; i < rgba.size() / 4; ++i) {
     const int a = rgba[i * 4 + 3];
-    for (size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = uint8_t((rgba[i * 4 + c] * a + 255 * (255 - a) + 127) / 255);
+    for (size_t c = 0; c < 3; ++c)
+      rgb[i * 3 + c] = uint8_t((rgba[i * 4 + c] * a + 255 * (255 - a) + 127) / 255);
   }
   return rgb;
 }
@@ -105,8 +106,8 @@ std::vector<uint8_t> encode_render_picture(const RenderPictures& pictures, const
                                            const PreviewParams& params) {
   if (pass.all) {
     if (params.format != ImageFormat::Exr)
-      throw invalid_field("format",
-                          fmt::format("pass={} is one EXR of every pass: ask for format=exr", kAllPassesName));
+      throw invalid_field(
+          "format", fmt::format("pass={} is one EXR of every pass: ask for format=exr", kAllPassesName));
     return all_passes(pictures);
   }
   if (!pass.aux) {

@@ -64,8 +64,8 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
 // Renders the frames (the same scene seen by each camera) one after the other, with one progress over
 // all of them, handing each one's images to `done` as it finishes.
 template <class Done>
-void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras,
-                   ProgressStyle style, Done&& done) {
+void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras, ProgressStyle style,
+                   Done&& done) {
   const render::RenderSettings& s = r.request.settings;
   const int64_t frames = int64_t(cameras.size());
   std::optional<ProgressBar> bar;
@@ -111,8 +111,9 @@ void run(Arguments& args) {
   refuse_unwritten_passes(s, image.format, file, turntable.has_value());
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
-    render_frames(scene, out.cameras(), progress,
-                  [&](int64_t i, const RenderedImages& frame) { out.write(i, encode_picture(frame, image)); });
+    render_frames(scene, out.cameras(), progress, [&](int64_t i, const RenderedImages& frame) {
+      out.write(i, encode_picture(frame, image));
+    });
     out.finish();
     return;
   }

@@ -88,8 +88,8 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
       api::render_picture_bytes(pass, params, settings.width, settings.height, settings.passes.list().size()),
       MemoryUse::Transient, std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  send_reserved(res, api::encode_render_picture(pictures_of(pictures, settings), pass, params), format_mime_type(params.format),
-                std::move(memory));
+  send_reserved(res, api::encode_render_picture(pictures_of(pictures, settings), pass, params),
+                format_mime_type(params.format), std::move(memory));
 }
 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {

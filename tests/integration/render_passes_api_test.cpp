@@ -1,18 +1,13 @@
 // Backgrounds, passes and the ground through the real server: a transparent render's corner has alpha 0
 // and its sphere alpha 1 in the alpha pass, the RGBA PNG (straight alpha) and the RGBA EXR
-// (premultiplied), the RGBA WebP and its thumbnail, the JPEG over white; the albedo, normal and depth passes of a white sphere; pass=all as one EXR whose
-// channels OpenEXR reads by name; a shadow catcher's alpha; and the refusals (a pass not asked for, pass=all
-// outside EXR, bad fields).
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
+// (premultiplied), the RGBA WebP and its thumbnail, the JPEG over white; the albedo, normal and depth passes
+// of a white sphere; pass=all as one EXR whose channels OpenEXR reads by name; a shadow catcher's alpha; and
+// the refusals (a pass not asked for, pass=all outside EXR, bad fields).
 #include <gtest/gtest.h>
 #include <stb_image.h>
 #include <webp/decode.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -20,11 +15,12 @@
 #include <vector>
 
 #include "engine/image/image_io.hpp"
+#include "support/exr_channels.hpp"
 #include "support/http_reply.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
-#include "support/temp_dir.hpp"
 #include "support/white_map.hpp"
+#include "support/white_sphere.hpp"
 
 namespace lp {
 namespace {
@@ -48,17 +44,7 @@ Reply post_render(const json& body) {
 
 // A white diffuse sphere of radius 1 at the origin, seen from 4 units on -y, on the white map.
 json sphere_body(json extra) {
-  json body = {{"envmap", "white"},
-               {"width", kSize},
-               {"height", kSize},
-               {"spp", 8},
-               {"scene",
-                {{"objects",
-                  {{{"type", "sphere"},
-                    {"center", {0, 0, 0}},
-                    {"radius", 1},
-                    {"material", {{"type", "diffuse"}, {"albedo", 1}}}}}},
-                 {"camera", {{"position", {0, -4, 0}}, {"look_at", {0, 0, 0}}, {"fov_deg", 40}}}}}};
+  json body = test::white_sphere_body("white", kSize, 8);
   if (extra.is_object()) body.update(extra);
   return body;
 }
@@ -77,26 +63,11 @@ Image decode(const Reply& r) {
   return read_image({reinterpret_cast<const uint8_t*>(r.body.data()), r.body.size()}).image;
 }
 
-// The channels of an EXR, by name, through OpenEXR (from a file: its API reads files or its streams).
+// The channels of an EXR by name, and its width.
 std::map<std::string, std::vector<float>> exr_channels(const std::string& bytes, int& width) {
-  test::TempDir dir;
-  const std::string path = (dir.path() / "passes.exr").string();
-  std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-  Imf::InputFile file(path.c_str());
-  const Imath::Box2i window = file.header().dataWindow();
-  width = window.max.x - window.min.x + 1;
-  const int height = window.max.y - window.min.y + 1;
-  std::map<std::string, std::vector<float>> out;
-  Imf::FrameBuffer fb;
-  for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c) {
-    auto& values = out[c.name()];
-    values.resize(size_t(width) * size_t(height));
-    fb.insert(c.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
-                                   sizeof(float) * size_t(width)));
-  }
-  file.setFrameBuffer(fb);
-  file.readPixels(window.min.y, window.max.y);
-  return out;
+  test::ExrChannels exr = test::exr_channels(bytes);
+  width = exr.width;
+  return std::move(exr.channels);
 }
 
 TEST(RenderPassesApi, ATransparentRenderHasAlphaZeroInItsCornerAndOneOnTheSphere) {
