@@ -61,24 +61,10 @@ std::vector<uint8_t> aux_picture8(const Image& pass, AuxPass p, const PreviewPar
   return {};
 }
 
-// Straight RGBA bytes shown over white, as RGB bytes.
-std::vector<uint8_t> over_white(std::span<const uint8_t> rgba) {
-  std::vector<uint8_t> rgb(rgba.size() / 4 * 3);
-  for (size_t i = 0; i < rgba.size() / 4; ++i) {
-    const int a = rgba[i * 4 + 3];
-    for (size_t c = 0; c < 3; ++c)
-      rgb[i * 3 + c] = uint8_t((rgba[i * 4 + c] * a + 255 * (255 - a) + 127) / 255);
-  }
-  return rgb;
-}
-
 std::vector<uint8_t> transparent_color(const Image& color, const Image& alpha, const PreviewParams& params) {
   if (params.format == ImageFormat::Exr) return write_exr_rgba(color, alpha);
   if (!is_eight_bit(params.format)) return write_image(color, params.format, params.tone);
   const std::vector<uint8_t> rgba = tone_map_rgba8(color, alpha, params.tone);
-  if (params.format == ImageFormat::Png) return encode_png_rgba8(rgba, color.width(), color.height());
-  if (params.format == ImageFormat::Jpeg)
-    return encode_pixels8({over_white(rgba), color.width(), color.height(), 3}, params.format);
   return encode_pixels8({rgba, color.width(), color.height(), 4}, params.format);
 }
 
