@@ -12,9 +12,9 @@ std::vector<std::string> render_image_pass_names() {
 
 RenderImagePass parse_render_image_pass(const Query& q) {
   const std::string name = query_enum(q, "pass", kColorPassName, render_image_pass_names());
-  if (name == kAllPassesName) return {true, false, std::nullopt};
-  if (name == kDenoisedPassName) return {false, true, std::nullopt};
-  return {false, false, parse_enum<render::AuxPass>(name)};
+  if (name == kAllPassesName) return {true, std::nullopt};
+  if (name == kDenoisedPassName) return {false, std::nullopt, true};
+  return {false, parse_enum<render::AuxPass>(name)};
 }
 
 }  // namespace lp::api

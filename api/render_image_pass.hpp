@@ -13,8 +13,8 @@ namespace lp::api {
 
 struct RenderImagePass {
   bool all = false;
-  bool denoised = false;
-  std::optional<render::AuxPass> aux;  // the colour when absent (and neither all nor denoised)
+  std::optional<render::AuxPass> aux;  // the colour when absent (and not all)
+  bool denoised = false;               // the colour denoised in its place
 };
 
 inline constexpr const char* kColorPassName = "color";

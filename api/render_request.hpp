@@ -14,6 +14,9 @@
 
 namespace lp::api {
 
+// The request's field naming the auxiliary passes (render::AuxPass) kept beside the colour.
+inline constexpr const char* kPassesField = "passes";
+
 struct RenderRequest {
   std::string envmap;                 // id of a loaded map (checked by the server)
   std::optional<std::string> preset;  // the scene preset, if the scene named one
@@ -22,6 +25,7 @@ struct RenderRequest {
   render::RenderSettings settings;
   ToneCurve tone_mapping = kRenderToneMapping.fallback;  // the default of its 8-bit pictures
   bool denoise = kRenderDenoise.fallback;  // its albedo and normal passes are then always computed
+  render::PassSet denoise_passes;          // those of settings.passes that only the denoise asked for
   // The camera once the scene's models are loaded, and what the view leaves out (set by the server).
   std::optional<render::SceneView> view;
 };

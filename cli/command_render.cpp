@@ -84,11 +84,12 @@ Image denoised(const render::Renderer& renderer, const denoise::Denoiser& denois
 }
 
 // Renders the frames (the same scene seen by each camera) one after the other, with one progress over
-// all of them, handing each picture (`image` says its format) to `done` as it finishes.
+// all of them, handing each one's images to `done` as it finishes.
 template <class Done>
-void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras,
-                   const api::PreviewParams& image, ProgressStyle style, Done&& done) {
+void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras, ProgressStyle style,
+                   Done&& done) {
   const render::RenderSettings& s = r.request.settings;
+  const render::RenderSettings written = written_settings(r.request);
   const int64_t frames = int64_t(cameras.size());
   const auto denoiser = r.request.denoise ? available_denoiser() : nullptr;
   std::optional<ProgressBar> bar;
@@ -105,8 +106,8 @@ void render_frames(const SceneRender& r, const std::vector<render::Camera>& came
     const std::atomic<bool> never{false};
     for (const render::RenderPass& pass : render::render_passes(s, s.spp))
       renderer.render(pass, never, [&bar, spp = pass.spp] { bar->advance(spp); });
-    done(i, encode_picture(r.request.denoise ? denoised(renderer, *denoiser) : renderer.image(), renderer, s,
-                           image));
+    done(i, RenderedImages(renderer, written,
+                           r.request.denoise ? std::optional(denoised(renderer, *denoiser)) : std::nullopt));
   }
   if (bar) bar->finish();
 }
@@ -131,18 +132,25 @@ void run(Arguments& args) {
   const SceneRender scene =
       read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
-  refuse_unwritten_passes(scene.request);
+  const render::RenderSettings s = written_settings(scene.request);
+  refuse_unwritten_passes(s, image.format, file, turntable.has_value());
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
-    render_frames(scene, out.cameras(), image, progress,
-                  [&](int64_t i, const std::vector<uint8_t>& frame) { out.write(i, frame); });
+    render_frames(scene, out.cameras(), progress, [&](int64_t i, const RenderedImages& frame) {
+      out.write(i, encode_picture(frame, image));
+    });
     out.finish();
     return;
   }
   const std::vector<render::Camera> one = {scene.request.scene.camera};
-  render_frames(scene, one, image, progress, [&](int64_t, const std::vector<uint8_t>& picture) {
+  render_frames(scene, one, progress, [&](int64_t, const RenderedImages& images) {
+    for (const render::AuxPass pass : separate_passes(s, image.format)) {
+      Output out(pass_file(*file, pass).string());
+      out.write(encode_pass(images, pass, image));
+      out.finish();
+    }
     Output out(file);
-    out.write(picture);
+    out.write(encode_picture(images, image));
     out.finish();
   });
 }
