@@ -10,6 +10,7 @@
 #include "api/render_schema.hpp"
 #include "engine/render/pass_schedule.hpp"
 #include "server/maps/envmap_content_hash.hpp"
+#include "server/renders/denoise_share.hpp"
 #include "server/renders/render_coordinator.hpp"
 
 namespace lp::server {
@@ -298,18 +299,17 @@ bool RenderJob::render_ranges_here() {
 
 void RenderJob::set_render_work(int64_t total, int64_t done) {
   render_work_ = total;
-  const int64_t denoise_work = request_.denoise ? (total + 8) / 9 : 0;  // a tenth of the whole
-  set_work(total + denoise_work, done);
+  set_work(total + (request_.denoise ? denoise_work(total) : 0), done);
 }
 
 bool RenderJob::denoise_result() {
   using Clock = std::chrono::steady_clock;
   if (!denoiser_) throw std::logic_error("a render to denoise has no denoiser");
   const RenderImage done = image();
-  const int64_t denoise_work = (render_work_ + 8) / 9;
+  const int64_t share = denoise_work(render_work_);
   denoise::DenoiseOptions options;
   options.progress = [&](double fraction) {
-    set_work(render_work_ + denoise_work, render_work_ + int64_t(fraction * double(denoise_work)));
+    set_work(render_work_ + share, render_work_ + int64_t(fraction * double(share)));
     return !cancel_flag().load() && !interrupt_requested();
   };
   const auto start = Clock::now();

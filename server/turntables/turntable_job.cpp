@@ -9,6 +9,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/renderer.hpp"
 #include "engine/render/scene_view.hpp"
+#include "server/renders/denoise_share.hpp"
 #include "server/renders/render_memory.hpp"
 
 namespace lp::server {
@@ -80,11 +81,11 @@ std::optional<RenderImage> TurntableJob::render_frame(int index, int64_t& frame_
   render::SceneDesc scene = r.scene;
   scene.camera = cameras_[size_t(index)];
   render::Renderer renderer(scene, r.lighting, r.settings, envmap_);
-  // A frame's work: its tile-samples, and a tenth of the whole for its denoise.
+  // A frame's work: its tile-samples, and its denoise's share.
   const int64_t render_work = int64_t(renderer.tile_count()) * r.settings.spp;
-  const int64_t denoise_work = r.denoise ? (render_work + 8) / 9 : 0;
+  const int64_t denoise_share = r.denoise ? denoise_work(render_work) : 0;
   if (frame_work == 0) {
-    frame_work = render_work + denoise_work;
+    frame_work = render_work + denoise_share;
     set_work(frame_work * request_.turntable.frames, frame_work * index);
   }
   const auto start = Clock::now();
@@ -96,7 +97,7 @@ std::optional<RenderImage> TurntableJob::render_frame(int index, int64_t& frame_
     const render::RenderStats stats = renderer.stats();
     counters_->add(stats.samples, stats.rays, std::chrono::duration<double>(Clock::now() - start).count());
   }
-  auto color = r.denoise ? denoise_frame(renderer, frame_work * index + render_work, denoise_work,
+  auto color = r.denoise ? denoise_frame(renderer, frame_work * index + render_work, denoise_share,
                                          frame_work * request_.turntable.frames)
                          : std::make_shared<const Image>(renderer.image());
   if (!color) return std::nullopt;

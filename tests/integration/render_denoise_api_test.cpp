@@ -1,6 +1,7 @@
 // Renders with `denoise` through the real server and its real denoiser: the denoised colour of a 4 spp
 // render of the `materials` preset is nearer a 1024 spp render than the raw colour is; the status names it;
-// pass=denoised is refused until it is ready and for a render that did not ask; it survives a restart;
+// pass=denoised is refused until it is ready and for a render that did not ask; a cancel stops the
+// denoise; it survives a restart;
 // turntables denoise by default; and a server without the weights refuses a denoise with 503.
 #include <gtest/gtest.h>
 
@@ -140,6 +141,28 @@ TEST(RenderDenoiseApi, PassDenoisedIsRefusedWhenNotAskedForAndUntilReady) {
   EXPECT_EQ(s.status_when(id, test::job_ended)["status"], "cancelled");
   EXPECT_EQ(s.get("/api/v1/renders/" + id + "/image?pass=denoised").status, 409);
   EXPECT_EQ(s.status(id)["denoised"]["ready"], false);
+}
+
+// The denoise is the last tenth of the progress; a cancel stops it there, and the render has no denoised
+// colour.
+TEST(RenderDenoiseApi, ACancelStopsTheDenoise) {
+  const DenoiseServer& s = server();
+  const Reply r =
+      s.post("/api/v1/renders", materials(1, {{"denoise", true}, {"width", 1536}, {"height", 1024}}));
+  ASSERT_EQ(r.status, 202) << r.body;
+  const std::string id = r.body_json()["id"];
+  // Every sample done and the job still running: the denoise has its turn.
+  const json denoising =
+      s.status_when(id, [](const json& st) { return test::job_ended(st) || st["spp_done"] == 1; });
+  ASSERT_EQ(denoising["status"], "running") << "the denoise of 1536x1024 ended before it was seen";
+  EXPECT_GE(denoising["progress"].get<double>(), 0.89);
+  EXPECT_EQ(s.del("/api/v1/renders/" + id).status, 202);
+  const json ended = s.status_when(id, test::job_ended);
+  EXPECT_EQ(ended["status"], "cancelled");
+  EXPECT_EQ(ended["denoised"]["ready"], false);
+  EXPECT_LT(ended["progress"].get<double>(), 1.0);
+  EXPECT_EQ(s.get("/api/v1/renders/" + id + "/image?pass=denoised").status, 409);
+  EXPECT_EQ(s.get("/api/v1/renders/" + id + "/image?format=pfm").status, 200);  // the raw colour stays
 }
 
 TEST(RenderDenoiseApi, TheDenoisedColourSurvivesARestart) {
