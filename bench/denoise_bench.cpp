@@ -7,32 +7,13 @@
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
-#include <random>
-
 #include "bench/process_memory.hpp"
 #include "engine/denoise/denoiser.hpp"
+#include "support/constant_map.hpp"
+#include "support/noisy_images.hpp"
 
 namespace lp::denoise {
 namespace {
-
-Image filled(int width, int height, Rgb c) {
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) img.set(x, y, c);
-  return img;
-}
-
-Image noisy_gradient(int width, int height) {
-  std::mt19937 rng(1);
-  std::exponential_distribution<float> spread(1.f);
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      img.set(x, y,
-              Rgb{0.2f + 0.6f * float(x) / float(width), 0.3f + 0.4f * float(y) / float(height), 0.5f} *
-                  spread(rng));
-  return img;
-}
 
 double process_cpu_seconds() {
   rusage usage{};
@@ -48,9 +29,9 @@ const Denoiser& denoiser() {
 
 void BM_Denoise(benchmark::State& state) {
   const int width = int(state.range(0)), height = int(state.range(1));
-  const Image color = noisy_gradient(width, height);
-  const Image albedo = filled(width, height, {0.7f, 0.7f, 0.7f});
-  const Image normal = filled(width, height, {0.f, 0.f, 1.f});
+  const Image color = test::with_exponential_noise(test::smooth_gradient(width, height), 1);
+  const Image albedo = test::constant_image(width, height, {0.7f, 0.7f, 0.7f});
+  const Image normal = test::constant_image(width, height, {0.f, 0.f, 1.f});
   DenoiseOptions options;
   options.threads = int(state.range(2));
   Image out = denoiser().run({&color, &albedo, &normal}, options);  // loads the weights, warms oneDNN

@@ -4,30 +4,16 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <random>
 
 #include "engine/denoise/denoiser.hpp"
 #include "engine/image/image_io.hpp"
 #include "support/cli_run.hpp"
+#include "support/constant_map.hpp"
+#include "support/noisy_images.hpp"
 #include "support/temp_dir.hpp"
 
 namespace lp {
 namespace {
-
-Image gradient(int width, int height) {
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      img.set(x, y, {0.2f + 0.6f * float(x) / float(width), 0.3f + 0.4f * float(y) / float(height), 0.5f});
-  return img;
-}
-
-Image filled(int width, int height, Rgb c) {
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) img.set(x, y, c);
-  return img;
-}
 
 void write_pfm(const Image& img, const std::filesystem::path& path) {
   const auto bytes = write_image(img, ImageFormat::Pfm);
@@ -37,28 +23,17 @@ void write_pfm(const Image& img, const std::filesystem::path& path) {
 
 struct Inputs {
   test::TempDir dir;
-  Image clean = gradient(160, 120), color = clean;
-  Image albedo = filled(160, 120, {0.7f, 0.7f, 0.7f}), normal = filled(160, 120, {0.f, 0.f, 1.f});
+  Image clean = test::smooth_gradient(160, 120), color = test::with_exponential_noise(clean, 5);
+  Image albedo = test::constant_image(160, 120, {0.7f, 0.7f, 0.7f}),
+        normal = test::constant_image(160, 120, {0.f, 0.f, 1.f});
   Inputs() {
-    std::mt19937 rng(5);
-    std::exponential_distribution<float> spread(1.f);
-    for (float& v : color.data()) v *= spread(rng);
     write_pfm(color, path("color.pfm"));
     write_pfm(albedo, path("albedo.pfm"));
     write_pfm(normal, path("normal.pfm"));
-    write_pfm(filled(80, 120, {1, 1, 1}), path("small.pfm"));
+    write_pfm(test::constant_image(80, 120, {1, 1, 1}), path("small.pfm"));
   }
   std::string path(const char* name) const { return (dir.path() / name).string(); }
 };
-
-double rel_mse(const Image& a, const Image& reference) {
-  double sum = 0;
-  for (size_t i = 0; i < a.data().size(); ++i) {
-    const double r = reference.data()[i], d = a.data()[i] - r;
-    sum += d * d / (r * r + 1e-2);
-  }
-  return sum / double(a.data().size());
-}
 
 TEST(CliDenoise, WritesTheEnginesResult) {
   const Inputs in;
@@ -73,7 +48,7 @@ TEST(CliDenoise, WritesTheEnginesResult) {
   ASSERT_EQ(written.width(), 160);
   ASSERT_EQ(written.height(), 120);
   for (size_t i = 0; i < expected.data().size(); ++i) ASSERT_EQ(written.data()[i], expected.data()[i]) << i;
-  EXPECT_LT(rel_mse(written, in.clean), rel_mse(in.color, in.clean) / 20);
+  EXPECT_LT(test::rel_mse(written, in.clean), test::rel_mse(in.color, in.clean) / 20);
 }
 
 TEST(CliDenoise, LdrColourAlone) {
