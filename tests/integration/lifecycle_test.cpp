@@ -302,6 +302,9 @@ TEST(Lifecycle, CorruptStateFilesAreSkippedWithAWarning) {
   EXPECT_EQ(api.get("/api/v1/health").status, 200);
   EXPECT_EQ(api.get("/api/v1/renders").body_json()["renders"].size(), 0u);
   EXPECT_EQ(api.get("/api/v1/envmaps/nofile").status, 404);
+  // The log reaches the test through a pipe, maybe after the answers above.
+  EXPECT_TRUE(server.wait_log("warning state: skipping", 3));
+  EXPECT_TRUE(server.wait_log("warning state: dropping maps/nofile.json"));
   const std::string log = server.log();
   EXPECT_EQ(count(log, "warning state: skipping"), 3u) << log;
   EXPECT_EQ(count(log, "warning state: dropping maps/nofile.json: the map's file is missing"), 1u) << log;
