@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <thread>
 
 #include "engine/denoise/tiles.hpp"
 #include "engine/denoise/transfer.hpp"
@@ -171,7 +172,10 @@ Image Denoiser::run(const DenoiseInputs& in, const DenoiseOptions& options) cons
   }
   const bool hdr = options.range == Range::Hdr;
   const Transfer transfer = hdr ? Transfer::Pu : Transfer::Srgb;
-  const int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
+  // No more threads than cores: OpenMP would start every one asked for.
+  const int cores = std::max(1, int(std::thread::hardware_concurrency()));
+  const int threads =
+      options.threads > 0 ? std::min(options.threads, cores) : tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(threads);
   OmpThreads omp_threads(threads);
 
