@@ -3,7 +3,9 @@
 // refused with DenoiseError.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -142,6 +144,18 @@ TEST(Denoise, ConcurrentRunsAgree) {
   for (size_t i = 0; i < alone.data().size(); ++i) {
     ASSERT_EQ(a.data()[i], alone.data()[i]) << i;
     ASSERT_EQ(b.data()[i], alone.data()[i]) << i;
+  }
+}
+
+// NaN, infinite and negative values are cleaned as OIDN cleans them: the output stays finite and
+// non-negative, even for a single pixel whose brightness leaves the autoexposure nothing to scale by.
+TEST(Denoise, NonFiniteColourGivesFiniteOutput) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& [width, height] : {std::pair{1, 1}, std::pair{17, 3}}) {
+    Image color = test::constant_image(width, height, {0.5f, 0.5f, 0.5f});
+    color.set(0, 0, {nan, inf, -1.f});
+    const Image out = denoiser().run({&color});
+    for (float v : out.data()) ASSERT_TRUE(std::isfinite(v) && v >= 0) << width << "x" << height << ": " << v;
   }
 }
 
