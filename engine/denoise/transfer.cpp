@@ -73,7 +73,9 @@ float autoexposure(const Image& color) {
       if (mean > kEps) log_sum += std::log2(mean), ++count;
     }
   }
-  return count > 0 ? kKey / float(std::exp2(log_sum / count)) : 1.f;
+  const float scale = count > 0 ? kKey / float(std::exp2(log_sum / count)) : 1.f;
+  return std::isnormal(scale) ? scale
+                              : 1.f;  // not for radiance near the float limits, whose inverse overflows
 }
 
 }  // namespace lp::denoise

@@ -23,7 +23,7 @@ float transfer_forward(Transfer t, float y);
 float transfer_inverse(Transfer t, float x);
 
 // OIDN's autoexposure: 0.18 over the geometric mean of the luminance of 16x16 bins (bins darker than 1e-8
-// left out), 1 for a black image.
+// left out), 1 for a black image (and for one so bright that the scale would underflow).
 float autoexposure(const Image& color);
 
 }  // namespace lp::denoise

@@ -1,4 +1,5 @@
 // OIDN's tensor archive reader, and the network's checks of what it read, on any bytes.
+// fuzz-max-len: 8192
 #include <cstddef>
 #include <cstdint>
 #include <span>

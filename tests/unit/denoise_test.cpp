@@ -5,48 +5,17 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
+#include <thread>
 
 #include "engine/denoise/denoiser.hpp"
 #include "engine/denoise/tiles.hpp"
+#include "support/constant_map.hpp"
+#include "support/noisy_images.hpp"
 
 namespace lp::denoise {
 namespace {
-
-Image smooth(int width, int height) {
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      img.set(x, y,
-              {0.2f + 0.6f * float(x) / float(width), 0.3f + 0.4f * float(y) / float(height),
-               0.5f + 0.3f * std::sin(float(x) / 40.f)});
-  return img;
-}
-
-// Each channel times an exponential variate (mean 1): the spread of a few samples per pixel.
-Image noisy(const Image& clean, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::exponential_distribution<float> spread(1.f);
-  Image img = clean;
-  for (float& v : img.data()) v *= spread(rng);
-  return img;
-}
-
-Image filled(int width, int height, Rgb c) {
-  Image img(width, height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) img.set(x, y, c);
-  return img;
-}
-
-double rel_mse(const Image& a, const Image& reference) {
-  double sum = 0;
-  for (size_t i = 0; i < a.data().size(); ++i) {
-    const double r = reference.data()[i], d = a.data()[i] - r;
-    sum += d * d / (r * r + 1e-2);
-  }
-  return sum / double(a.data().size());
-}
 
 const Denoiser& denoiser() {
   static const Denoiser d;
@@ -79,9 +48,9 @@ TEST(Denoise, TilePlanCoversTheImageWithAlignedOverlaps) {
 
 // Small tiles (3 x 4 of them) give what one pass over the whole image gives, within float noise.
 TEST(Denoise, TiledEqualsWhole) {
-  const Image color = noisy(smooth(300, 200), 1);
-  const Image albedo = filled(300, 200, {0.8f, 0.6f, 0.4f});
-  const Image normal = filled(300, 200, {0.f, 0.f, 1.f});
+  const Image color = test::with_exponential_noise(test::smooth_gradient(300, 200), 1);
+  const Image albedo = test::constant_image(300, 200, {0.8f, 0.6f, 0.4f});
+  const Image normal = test::constant_image(300, 200, {0.f, 0.f, 1.f});
   const DenoiseInputs in{&color, &albedo, &normal};
   const Image whole = denoiser().run(in);
   DenoiseOptions small;
@@ -99,7 +68,7 @@ TEST(Denoise, TiledEqualsWhole) {
 // zero padding shows: up to 40% off in a corner pixel, as in OIDN).
 TEST(Denoise, ConstantStaysConstant) {
   for (const Range range : {Range::Hdr, Range::Ldr}) {
-    const Image color = filled(96, 80, {0.5f, 0.25f, 0.125f});
+    const Image color = test::constant_image(96, 80, {0.5f, 0.25f, 0.125f});
     DenoiseOptions options;
     options.range = range;
     const Image out = denoiser().run({&color}, options);
@@ -117,24 +86,24 @@ TEST(Denoise, ConstantStaysConstant) {
 // Noise on a smooth image (exponential for HDR, uniform in [0, 2] on a darker image for LDR, so that no
 // value clips): every filter brings the relMSE down by more than 20x (about 250x for HDR, 30x for LDR).
 TEST(Denoise, RemovesNoiseFromASmoothImage) {
-  const Image albedo = filled(256, 192, {0.7f, 0.7f, 0.7f});
-  const Image normal = filled(256, 192, {0.f, 0.f, 1.f});
+  const Image albedo = test::constant_image(256, 192, {0.7f, 0.7f, 0.7f});
+  const Image normal = test::constant_image(256, 192, {0.f, 0.f, 1.f});
   for (const Range range : {Range::Hdr, Range::Ldr}) {
-    Image clean = smooth(256, 192);
-    Image color = noisy(clean, 7);
+    Image clean = test::smooth_gradient(256, 192);
+    Image color = test::with_exponential_noise(clean, 7);
     if (range == Range::Ldr) {
       std::mt19937 rng(7);
       std::uniform_real_distribution<float> spread(0.f, 2.f);
       for (size_t i = 0; i < clean.data().size(); ++i)
         clean.data()[i] *= 0.5f, color.data()[i] = clean.data()[i] * spread(rng);
     }
-    const double before = rel_mse(color, clean);
+    const double before = test::rel_mse(color, clean);
     EXPECT_GT(before, 0.2);
     const DenoiseInputs inputs[] = {{&color}, {&color, &albedo}, {&color, &albedo, &normal}};
     for (const DenoiseInputs& in : inputs) {
       DenoiseOptions options;
       options.range = range;
-      const double after = rel_mse(denoiser().run(in, options), clean);
+      const double after = test::rel_mse(denoiser().run(in, options), clean);
       EXPECT_LT(after, before / 20) << "range " << int(range) << " albedo " << bool(in.albedo) << " normal "
                                     << bool(in.normal) << ": " << before << " -> " << after;
       std::printf("relMSE %s%s%s: %.4f -> %.5f (%.0fx)\n", range == Range::Hdr ? "hdr" : "ldr",
@@ -146,7 +115,7 @@ TEST(Denoise, RemovesNoiseFromASmoothImage) {
 // An explicit input scale replaces the autoexposure; scaling the image and the scale together changes
 // nothing but the output's scale.
 TEST(Denoise, InputScaleMatchesAutoexposure) {
-  const Image color = noisy(smooth(64, 48), 3);
+  const Image color = test::with_exponential_noise(test::smooth_gradient(64, 48), 3);
   Image brighter = color;
   for (float& v : brighter.data()) v *= 8;
   DenoiseOptions a, b;
@@ -157,8 +126,42 @@ TEST(Denoise, InputScaleMatchesAutoexposure) {
     ASSERT_NEAR(out_b.data()[i], 8 * out_a.data()[i], 1e-4 * (8 * out_a.data()[i]) + 1e-6);
 }
 
+// Two runs at once on one Denoiser (each tiled, sharing the loaded weights and their reordered copies)
+// give what one run alone gives.
+TEST(Denoise, ConcurrentRunsAgree) {
+  const Image color = test::with_exponential_noise(test::smooth_gradient(300, 200), 9);
+  const Image albedo = test::constant_image(300, 200, {0.5f, 0.5f, 0.5f});
+  DenoiseOptions options;
+  options.tile_size = 256;
+  options.threads = 1;
+  const Denoiser fresh;
+  Image a, b;
+  std::thread first([&] { a = fresh.run({&color, &albedo}, options); });
+  std::thread second([&] { b = fresh.run({&color, &albedo}, options); });
+  first.join();
+  second.join();
+  const Image alone = fresh.run({&color, &albedo}, options);
+  for (size_t i = 0; i < alone.data().size(); ++i) {
+    ASSERT_EQ(a.data()[i], alone.data()[i]) << i;
+    ASSERT_EQ(b.data()[i], alone.data()[i]) << i;
+  }
+}
+
+// NaN, infinite and negative values are cleaned as OIDN cleans them: the output stays finite and
+// non-negative, even for a single pixel whose brightness leaves the autoexposure nothing to scale by.
+TEST(Denoise, NonFiniteColourGivesFiniteOutput) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (const auto& [width, height] : {std::pair{1, 1}, std::pair{17, 3}}) {
+    Image color = test::constant_image(width, height, {0.5f, 0.5f, 0.5f});
+    color.set(0, 0, {nan, inf, -1.f});
+    const Image out = denoiser().run({&color});
+    for (float v : out.data()) ASSERT_TRUE(std::isfinite(v) && v >= 0) << width << "x" << height << ": " << v;
+  }
+}
+
 TEST(Denoise, BadInputsAreRefused) {
-  const Image color = filled(32, 32, {1, 1, 1}), small = filled(16, 32, {1, 1, 1});
+  const Image color = test::constant_image(32, 32, {1, 1, 1}),
+              small = test::constant_image(16, 32, {1, 1, 1});
   EXPECT_THROW(denoiser().run({}), DenoiseError);
   EXPECT_THROW(denoiser().run({&color, &small}), DenoiseError);
   EXPECT_THROW(denoiser().run({&color, &color, &small}), DenoiseError);
@@ -170,7 +173,7 @@ TEST(Denoise, BadInputsAreRefused) {
 }
 
 TEST(Denoise, ProgressCancels) {
-  const Image color = filled(300, 200, {1, 1, 1});
+  const Image color = test::constant_image(300, 200, {1, 1, 1});
   DenoiseOptions options;
   options.tile_size = kMinTileSize;
   std::vector<double> seen;
