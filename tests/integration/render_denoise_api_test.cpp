@@ -1,7 +1,7 @@
 // Renders with `denoise` through the real server and its real denoiser: the denoised colour of a 4 spp
 // render of the `materials` preset is nearer a 1024 spp render than the raw colour is; the status names it;
 // pass=denoised is refused until it is ready and for a render that did not ask; a cancel stops the
-// denoise; it survives a restart;
+// denoise; it survives a restart, and an interrupted render is denoised once resumed;
 // turntables denoise by default; and a server without the weights refuses a denoise with 503.
 #include <gtest/gtest.h>
 
@@ -179,6 +179,28 @@ TEST(RenderDenoiseApi, TheDenoisedColourSurvivesARestart) {
   const Reply again = s.get(path);
   EXPECT_EQ(again.status, 200);
   EXPECT_TRUE(again.body == denoised.body) << "the denoised image differs after a restart";
+}
+
+// A render a stop interrupted has no denoised colour; resumed, it finishes its samples and denoises them.
+TEST(RenderDenoiseApi, AnInterruptedRenderIsDenoisedWhenResumed) {
+  DenoiseServer& s = server();
+  const Reply r =
+      s.post("/api/v1/renders", materials(512, {{"denoise", true}, {"width", 48}, {"height", 32}}));
+  ASSERT_EQ(r.status, 202) << r.body;
+  const std::string id = r.body_json()["id"];
+  s.status_when(id, [](const json& st) { return test::job_ended(st) || st["spp_done"].get<int>() > 0; });
+  s.restart();  // SIGTERM: the running pass ends, the render is interrupted
+  const json interrupted = s.status(id);
+  ASSERT_EQ(interrupted["status"], "interrupted") << interrupted.dump();
+  EXPECT_EQ(interrupted["denoised"]["ready"], false);
+  EXPECT_EQ(s.get("/api/v1/renders/" + id + "/image?pass=denoised").status, 409);
+  const Reply resumed = s.post("/api/v1/renders/" + id + "/resume", json::object());
+  ASSERT_EQ(resumed.status, 202) << resumed.body;
+  const json done = s.status_when(id, test::job_ended);
+  EXPECT_EQ(done["status"], "done");
+  EXPECT_EQ(done["spp_done"], 512);
+  EXPECT_EQ(done["denoised"]["ready"], true);
+  EXPECT_EQ(s.get("/api/v1/renders/" + id + "/image?pass=denoised").status, 200);
 }
 
 TEST(RenderDenoiseApi, TurntablesDenoiseByDefault) {
