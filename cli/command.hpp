@@ -27,5 +27,6 @@ Command sh_command();
 Command brdf_lut_command();
 Command sun_command();
 Command bake_command();
+Command denoise_command();
 
 }  // namespace lp::cli

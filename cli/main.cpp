@@ -15,9 +15,10 @@ namespace lp::cli {
 namespace {
 
 const std::vector<Command>& commands() {
-  static const std::vector<Command> all = {
-      info_command(),    sample_command(), median_cut_command(), fresnel_command(), render_command(),
-      convert_command(), sh_command(),     brdf_lut_command(),   sun_command(),     bake_command()};
+  static const std::vector<Command> all = {info_command(),    sample_command(),   median_cut_command(),
+                                           fresnel_command(), render_command(),   convert_command(),
+                                           sh_command(),      brdf_lut_command(), sun_command(),
+                                           bake_command(),    denoise_command()};
   return all;
 }
 

@@ -11,8 +11,8 @@
 namespace lp {
 namespace {
 
-const std::vector<std::string> kCommands = {"info",    "sample", "median-cut", "fresnel", "render",
-                                            "convert", "sh",     "brdf-lut",   "sun",     "bake"};
+const std::vector<std::string> kCommands = {"info", "sample",   "median-cut", "fresnel", "render", "convert",
+                                            "sh",   "brdf-lut", "sun",        "bake",    "denoise"};
 
 TEST(CliUsage, HelpForTheToolAndEveryCommand) {
   for (const std::vector<std::string>& args :
@@ -57,7 +57,7 @@ TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"paint"},
        "unknown command 'paint' (expected one of: info, sample, median-cut, fresnel, render, convert, sh, "
-       "brdf-lut, sun, bake)"},
+       "brdf-lut, sun, bake, denoise)"},
       {{"info"}, "usage: lightprobe info MAP|MODEL [options] (see --help)"},
       {{"info", "a.exr", "b.exr"}, "usage: lightprobe info MAP|MODEL [options] (see --help)"},
       {{"info", "default", "--colour", "red"}, "unknown option '--colour' (see lightprobe info --help)"},
@@ -66,6 +66,8 @@ TEST(CliUsage, MistakesAreBadRequestsWithExitStatusTwo) {
       {{"sample", "default", "--count", "1", "--count", "2"}, "--count is given more than once"},
       {{"render", "scene.json", "--quiet=yes"}, "--quiet takes no value"},
       {{"convert", "in.exr"}, "usage: lightprobe convert IN OUT [options] (see --help)"},
+      {{"denoise"},
+       "usage: lightprobe denoise COLOR -o OUT [--albedo A] [--normal N] [--ldr] [options] (see --help)"},
   };
   for (const auto& [args, message] : cases) {
     const test::CliRun run = test::run_cli(args, dir.path());
