@@ -319,14 +319,14 @@ render::Background parse_background(const Json& body) {
 // Names of auxiliary passes, each at most once.
 render::PassSet parse_passes(const Json& body) {
   render::PassSet passes;
-  const Json* v = member(body, "passes");
+  const Json* v = member(body, kPassesField);
   if (!v) return passes;
   const std::string names = enum_names_joined<render::AuxPass>();
   if (!v->is_array())
-    throw invalid_field("passes",
+    throw invalid_field(kPassesField,
                         fmt::format("must be an array of pass names ({}), got {}", names, describe(*v)));
   for (size_t i = 0; i < v->size(); ++i) {
-    const std::string field = fmt::format("passes[{}]", i);
+    const std::string field = fmt::format("{}[{}]", kPassesField, i);
     const Json& name = (*v)[i];
     const auto pass = name.is_string() ? parse_enum<render::AuxPass>(name.get<std::string>()) : std::nullopt;
     if (!pass) throw invalid_field(field, fmt::format("must be one of {}, got {}", names, describe(name)));
@@ -342,7 +342,7 @@ RenderRequest parse_render_request(const Json& body, const RequestLimits& limits
   if (!body.is_object()) throw ApiError(ErrorCode::InvalidJson, "the request body must be a JSON object");
   reject_unknown_fields(
       body, {"envmap", "scene", "lighting", "width", "height", "spp", "max_depth", "seed", "mipmaps",
-             "normal_maps", "sampling", kRenderToneMapping.name, "background", "clamp", "passes"});
+             "normal_maps", "sampling", kRenderToneMapping.name, "background", "clamp", kPassesField});
   RenderRequest r;
   r.envmap = json_string(body, "envmap", std::nullopt);
   if (r.envmap.empty()) throw invalid_field("envmap", "must not be empty");

@@ -14,6 +14,9 @@
 
 namespace lp::api {
 
+// The request's field naming the auxiliary passes (render::AuxPass) kept beside the colour.
+inline constexpr const char* kPassesField = "passes";
+
 struct RenderRequest {
   std::string envmap;                 // id of a loaded map (checked by the server)
   std::optional<std::string> preset;  // the scene preset, if the scene named one

@@ -62,10 +62,10 @@ std::optional<tbb::global_control> thread_limit(Arguments& args) {
 }
 
 // Renders the frames (the same scene seen by each camera) one after the other, with one progress over
-// all of them, handing each picture (`image` says its format) to `done` as it finishes.
+// all of them, handing each one's images to `done` as it finishes.
 template <class Done>
-void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras,
-                   const api::PreviewParams& image, ProgressStyle style, Done&& done) {
+void render_frames(const SceneRender& r, const std::vector<render::Camera>& cameras, ProgressStyle style,
+                   Done&& done) {
   const render::RenderSettings& s = r.request.settings;
   const int64_t frames = int64_t(cameras.size());
   std::optional<ProgressBar> bar;
@@ -82,7 +82,7 @@ void render_frames(const SceneRender& r, const std::vector<render::Camera>& came
     const std::atomic<bool> never{false};
     for (const render::RenderPass& pass : render::render_passes(s, s.spp))
       renderer.render(pass, never, [&bar, spp = pass.spp] { bar->advance(spp); });
-    done(i, encode_picture(renderer, s, image));
+    done(i, RenderedImages(renderer, s));
   }
   if (bar) bar->finish();
 }
@@ -107,18 +107,25 @@ void run(Arguments& args) {
   const SceneRender scene =
       read_scene(args.positional()[0], fields, request.objects, turntable, api::RequestLimits{});
   image.tone.curve = scene.request.tone_mapping;
-  refuse_unwritten_passes(scene.request.settings);
+  const render::RenderSettings& s = scene.request.settings;
+  refuse_unwritten_passes(s, image.format, file, turntable.has_value());
   if (turntable) {
     TurntableFiles out(*file, *scene.turntable, scene, image);
-    render_frames(scene, out.cameras(), image, progress,
-                  [&](int64_t i, const std::vector<uint8_t>& frame) { out.write(i, frame); });
+    render_frames(scene, out.cameras(), progress, [&](int64_t i, const RenderedImages& frame) {
+      out.write(i, encode_picture(frame, image));
+    });
     out.finish();
     return;
   }
   const std::vector<render::Camera> one = {scene.request.scene.camera};
-  render_frames(scene, one, image, progress, [&](int64_t, const std::vector<uint8_t>& picture) {
+  render_frames(scene, one, progress, [&](int64_t, const RenderedImages& images) {
+    for (const render::AuxPass pass : separate_passes(s, image.format)) {
+      Output out(pass_file(*file, pass).string());
+      out.write(encode_pass(images, pass, image));
+      out.finish();
+    }
     Output out(file);
-    out.write(picture);
+    out.write(encode_picture(images, image));
     out.finish();
   });
 }

@@ -3,35 +3,63 @@
 #include <fmt/format.h>
 
 #include "api/api_error.hpp"
-#include "engine/image/image_io.hpp"
+#include "api/render_request.hpp"
 
 namespace lp::cli {
-namespace {
 
-bool transparent(const render::RenderSettings& s) {
-  return s.background.mode == render::BackgroundMode::Transparent;
+RenderedImages::RenderedImages(const render::Renderer& renderer, const render::RenderSettings& settings)
+    : color_(renderer.image()),
+      transparent_(settings.background.mode == render::BackgroundMode::Transparent) {
+  for (const render::AuxPass p : settings.passes.list()) passes_[size_t(p)] = renderer.image(p);
 }
 
-}  // namespace
-
-std::vector<uint8_t> encode_picture(const render::Renderer& renderer, const render::RenderSettings& settings,
-                                    const api::PreviewParams& params) {
-  const Image color = renderer.image();
-  if (!transparent(settings) || (params.format != ImageFormat::Png && params.format != ImageFormat::Exr))
-    return write_image(color, params.format, params.tone);
-  const Image alpha = renderer.image(render::AuxPass::Alpha);
-  if (params.format == ImageFormat::Exr) return write_exr_rgba(color, alpha);
-  return encode_png_rgba8(tone_map_rgba8(color, alpha, params.tone), color.width(), color.height());
+api::RenderPictures RenderedImages::pictures() const {
+  api::RenderPictures out;
+  out.color = &color_;
+  for (size_t p = 0; p < passes_.size(); ++p) out.passes[p] = passes_[p] ? &*passes_[p] : nullptr;
+  out.transparent = transparent_;
+  return out;
 }
 
-void refuse_unwritten_passes(const render::RenderSettings& settings) {
-  for (const render::AuxPass pass : settings.passes.list())
-    if (pass != render::AuxPass::Alpha || !transparent(settings))
-      throw api::ApiError(api::ErrorCode::BadRequest,
-                          fmt::format("the tool writes a render's colour (and its alpha when the background "
-                                      "is transparent), not its '{}' pass: ask the server for passes "
-                                      "(GET /api/v1/renders/{{id}}/image?pass=NAME)",
-                                      enum_name(pass)));
+std::vector<uint8_t> encode_picture(const RenderedImages& images, const api::PreviewParams& params) {
+  const api::RenderImagePass pass{params.format == ImageFormat::Exr, std::nullopt};
+  return api::encode_render_picture(images.pictures(), pass, params);
+}
+
+std::vector<render::AuxPass> separate_passes(const render::RenderSettings& settings, ImageFormat format) {
+  std::vector<render::AuxPass> out;
+  if (format == ImageFormat::Exr) return out;
+  for (const render::AuxPass p : settings.passes.list())
+    if (p != render::AuxPass::Alpha || settings.background.mode != render::BackgroundMode::Transparent)
+      out.push_back(p);
+  return out;
+}
+
+std::vector<uint8_t> encode_pass(const RenderedImages& images, render::AuxPass pass,
+                                 const api::PreviewParams& params) {
+  return api::encode_render_picture(images.pictures(), {false, pass}, params);
+}
+
+std::filesystem::path pass_file(const std::filesystem::path& output, render::AuxPass pass) {
+  std::filesystem::path out = output;
+  out.replace_filename(output.stem().string() + "." + std::string(enum_name(pass)) +
+                       output.extension().string());
+  return out;
+}
+
+void refuse_unwritten_passes(const render::RenderSettings& settings, ImageFormat format,
+                             const std::optional<std::string>& file, bool turntable) {
+  const auto separate = separate_passes(settings, format);
+  if (separate.empty()) return;
+  const bool to_stdout = !file || *file == "-";
+  if (!turntable && !to_stdout) return;
+  throw api::ApiError(
+      api::ErrorCode::BadRequest,
+      fmt::format("the '{}' pass is written as a file of its own beside -o FILE unless the output is EXR: "
+                  "{}; ask for format exr, or leave the pass out of \"{}\"",
+                  enum_name(separate.front()),
+                  turntable ? "a turntable writes no passes beside its frames" : "give -o FILE",
+                  api::kPassesField));
 }
 
 }  // namespace lp::cli

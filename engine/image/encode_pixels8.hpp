@@ -1,5 +1,6 @@
 #pragma once
-// An 8-bit picture in one of the 8-bit formats (is_eight_bit): PNG (RGB), JPEG, WebP.
+// An 8-bit picture in one of the 8-bit formats (is_eight_bit): PNG and WebP, RGB or RGBA; JPEG, which has
+// no alpha, of RGB or of RGBA shown over white (as a page of a white background shows the PNG).
 #include <cstdint>
 #include <vector>
 

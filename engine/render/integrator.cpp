@@ -133,7 +133,7 @@ PathSample Integrator::shadow_catcher(const Ray& ray, const SurfaceHit& hit, Pat
   const Point2 u_choice = sampler.get_2d();
   const Point2 u_bsdf = sampler.get_2d();
   const float sun_choice = sun_ ? sun_->selection(s.frame.n) : 0;
-  Rgb unshadowed{};
+  Rgb unshadowed{}, reflected{};
   Rgb lit =
       s.bsdf.has_non_delta_lobe() ? direct(s, u_light, u_choice.x, sun_choice, rays, &unshadowed) : Rgb{};
   if (const auto b = s.bsdf.sample(s.wo, u_choice.y, u_bsdf); b && !is_black(b->weight)) {
@@ -142,7 +142,12 @@ PathSample Integrator::shadow_catcher(const Ray& ray, const SurfaceHit& hit, Pat
       Rgb c = b->weight * escaped(env_.locate(wi), cone.spread, 1, false, b->delta, b->pdf, 1 - sun_choice);
       if (sun_) c += b->weight * escaped_sun(wi, 1, b->delta, b->pdf, sun_choice);
       unshadowed += c;
-      if (visible(hit, wi, rays)) lit += c;
+      ++rays;
+      const Ray next{EmbreeScene::offset_origin(hit, wi), wi};
+      if (const std::optional<SurfaceHit> object = scene_.intersect(next); !object)
+        lit += c;
+      else if (!config_.catchers[object->object])
+        reflected = clamped(b->weight * radiance(next, object, sampler, rays).color);
     }
   }
   const float open = unshadowed.x + unshadowed.y + unshadowed.z;
@@ -150,7 +155,7 @@ PathSample Integrator::shadow_catcher(const Ray& ray, const SurfaceHit& hit, Pat
   Rgb behind = escaped(env_.locate(ray.direction), camera_cone.spread, 0, true, true, 0, 1);
   if (sun_) behind += escaped_sun(ray.direction, 0, true, 0, 0);
   PathSample out;
-  out.color = behind * left;
+  out.color = behind * left + reflected;
   out.alpha = 1 - left;
   return out;
 }

@@ -95,8 +95,12 @@ class Integrator {
   Rgb escaped_sun(Vec3 direction, int depth, bool last_delta, float bsdf_pdf, float choice) const;
   // What a camera ray that meets a shadow catcher sees: the background behind the catcher times the
   // fraction of the catcher's direct light its shadows leave, one light sample and one BSDF sample each
-  // traced with and without their shadow ray, as OSPRay's shadow catcher does. Where nothing shadows the
-  // catcher the two sums are the same numbers added in the same order, so the fraction is exactly 1.
+  // traced with and without their shadow ray, as OSPRay's shadow catcher does, plus the light the
+  // objects send the catcher along the BSDF sample (reflections and bounce light, as Cycles' catcher
+  // keeps them), which is indirect light and clamped as such. Its alpha is the shadow's opacity: over a
+  // transparent background the colour is the reflected light alone, premultiplied, so compositing it
+  // over any page adds the reflections and darkens by the shadow. Where nothing shadows the catcher the
+  // two sums are the same numbers added in the same order, so the fraction is exactly 1.
   PathSample shadow_catcher(const Ray& ray, const SurfaceHit& hit, PathSampler& sampler,
                             uint64_t& rays) const;
   // `u_select` picks a median-cut light, or the sun (with probability `sun_choice`) over the map.

@@ -75,8 +75,8 @@ struct MeshObject {
 // A horizontal ground: a plane facing +z at `height`, or, when none is given, at the lowest z of the
 // scene's bounded objects (resolve_ground, once the models are loaded). A shadow catcher is invisible to
 // the camera: where the camera sees it, it shows what lies behind it (the background) darkened by the
-// shadows the other objects cast on it, and its alpha is that shadow's opacity. Rays that have bounced
-// see it as a surface of its material.
+// shadows the other objects cast on it, plus the objects' light it reflects (Integrator::shadow_catcher),
+// and its alpha is that shadow's opacity. Rays that have bounced see it as a surface of its material.
 struct Ground {
   std::optional<float> height;
   bool shadow_catcher = false;

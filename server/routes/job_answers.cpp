@@ -3,9 +3,20 @@
 #include <fmt/format.h>
 
 #include "api/api_error.hpp"
+#include "server/app.hpp"
 #include "server/http/responses.hpp"
 
 namespace lp::server {
+
+void refuse_on_worker(const App& app, const std::string& kind) {
+  if (app.options.scale_out.role == ServerRole::Worker)
+    throw api::ApiError(
+        api::ErrorCode::WorkerOnly,
+        fmt::format("this server runs with --role worker: it renders work items of other servers' "
+                    "renders and takes no {} of its own; send it to a server with --role api or "
+                    "both",
+                    kind));
+}
 
 void send_queue_full(const JobManager& jobs, const std::string& kind, httplib::Response& res) {
   res.set_header("Retry-After", std::to_string(jobs.retry_after_s()));

@@ -10,6 +10,11 @@
 
 namespace lp::server {
 
+struct App;
+
+// 409 worker_only on a server with --role worker: it renders the work items of other servers' renders
+// and takes no `kind` job ("render", "turntable") of its own.
+void refuse_on_worker(const App& app, const std::string& kind);
 // 503 queue_full with Retry-After: `kind` ("renders") are running and queued up to the limit.
 void send_queue_full(const JobManager& jobs, const std::string& kind, httplib::Response& res);
 // 202 with the job's status (taken before a runner could pick it up) and its URL as Location.

@@ -35,21 +35,12 @@ std::shared_ptr<RenderJob> find_render(const App& app, const std::string& id) {
   return job;
 }
 
-// A worker renders the work items of other servers' renders and takes none of its own.
-void refuse_on_worker(const App& app) {
-  if (app.options.scale_out.role == ServerRole::Worker)
-    throw api::ApiError(
-        api::ErrorCode::WorkerOnly,
-        "this server runs with --role worker: it renders work items of other servers' renders "
-        "and takes no render of its own; send it to a server with --role api or both");
-}
-
 std::string render_url(const RenderJob& job) {
   return "/api/v1/renders/" + job.id();
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
-  refuse_on_worker(app);
+  refuse_on_worker(app, "render");
   RenderRecord record;
   record.id = app.renders.new_id();
   record.request = api::parse_json_object(req.body);
@@ -65,7 +56,7 @@ void submit(App& app, const httplib::Request& req, httplib::Response& res) {
 }
 
 void resume(App& app, const httplib::Request& req, httplib::Response& res) {
-  refuse_on_worker(app);
+  refuse_on_worker(app, "render");
   const auto queued = resume_render(app, find_render(app, path_param(req, 1)));
   if (!queued.job) return send_queue_full(app.renders, "renders", res);
   send_accepted(render_url(*queued.job), queued.status, res);
@@ -93,11 +84,12 @@ void image(const App& app, const httplib::Request& req, httplib::Response& res) 
   const auto size = api::parse_image_size(req.params);  // a thumbnail, resampled in linear light
   const RenderImage pictures = size ? fit_longest_side(current, size) : current;
   const auto& settings = job->request().settings;
-  auto memory = app.memory.reserve(render_picture_bytes(pass, params, settings), MemoryUse::Transient,
-                                   std::string("encoding a render as ") + enum_name(params.format));
+  auto memory = app.memory.reserve(
+      api::render_picture_bytes(pass, params, settings.width, settings.height, settings.passes.list().size()),
+      MemoryUse::Transient, std::string("encoding a render as ") + enum_name(params.format));
   res.set_header("X-Spp-Done", std::to_string(current.spp_done));
-  send_reserved(res, encode_render_picture(pictures, pass, params, settings), format_mime_type(params.format),
-                std::move(memory));
+  send_reserved(res, api::encode_render_picture(pictures_of(pictures, settings), pass, params),
+                format_mime_type(params.format), std::move(memory));
 }
 
 void cancel(App& app, const httplib::Request& req, httplib::Response& res) {

@@ -15,9 +15,9 @@
 #include "api/turntable_schema.hpp"
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/image_io.hpp"
-#include "engine/image/resize.hpp"
 #include "engine/image/webp.hpp"
 #include "server/http/reserved_content.hpp"
+#include "server/renders/render_pictures.hpp"
 #include "server/renders/scene_meshes.hpp"
 #include "server/routes/job_answers.hpp"
 #include "server/routes/routes.hpp"
@@ -34,7 +34,7 @@ std::shared_ptr<TurntableJob> find_turntable(const App& app, const std::string& 
 }
 
 // The frames finished so far; 409 no_image_yet before the first.
-std::vector<std::shared_ptr<const Image>> finished_frames(const TurntableJob& job) {
+std::vector<RenderImage> finished_frames(const TurntableJob& job) {
   auto frames = job.frames();
   if (frames.empty())
     throw api::ApiError(
@@ -45,12 +45,13 @@ std::vector<std::shared_ptr<const Image>> finished_frames(const TurntableJob& jo
 
 MemoryReservation reserve_frames(App& app, const TurntableJob& job, size_t frames, const std::string& what) {
   const auto& s = job.request().render.settings;
-  const int64_t bytes = frames_rgb8_bytes(int64_t(frames), s.width, s.height) +
+  const int64_t bytes = frames8_bytes(int64_t(frames), s.width, s.height) +
                         encode_bytes(ImageFormat::Png, int64_t(frames) * s.width, s.height);
   return app.memory.reserve(bytes, MemoryUse::Transient, what);
 }
 
 void submit(App& app, const httplib::Request& req, httplib::Response& res) {
+  refuse_on_worker(app, "turntable");
   auto request = api::parse_turntable_request(api::parse_json_object(req.body), app.options.limits);
   const auto envmap = app.envmaps.find(request.render.envmap);
   if (!envmap)
@@ -98,11 +99,13 @@ void frame(App& app, const httplib::Request& req, httplib::Response& res) {
     throw api::ApiError(api::ErrorCode::NoImageYet,
                         fmt::format("frame {} of turntable '{}' is not rendered yet ({} of {} done)", index,
                                     job->id(), frames.size(), job->frame_count()));
-  const Image& pixels = *frames[size_t(index)];
-  auto memory = app.memory.reserve(encode_bytes(params.format, pixels.width(), pixels.height()) +
-                                       EnvMap::image_bytes(pixels.width(), pixels.height()),
+  const auto& settings = job->request().render.settings;
+  const api::RenderImagePass color;
+  auto memory = app.memory.reserve(api::render_picture_bytes(color, params, settings.width, settings.height,
+                                                             settings.passes.list().size()),
                                    MemoryUse::Transient, "encoding a turntable frame");
-  send_reserved(res, write_image(fit_longest_side(pixels, size), params.format, params.tone),
+  const RenderImage frame = fit_longest_side(frames[size_t(index)], size);
+  send_reserved(res, api::encode_render_picture(pictures_of(frame, settings), color, params),
                 format_mime_type(params.format), std::move(memory));
 }
 
@@ -113,7 +116,7 @@ void zip(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "zipping a turntable's frames");
   const std::span<const render::Camera> cameras(job->cameras().data(), frames.size());
-  send_reserved(res, frames_zip(frames_rgb8(frames, size, tone), api::describe_turntable_cameras(cameras)),
+  send_reserved(res, frames_zip(frames8(frames, size, tone), api::describe_turntable_cameras(cameras)),
                 "application/zip", std::move(memory));
 }
 
@@ -135,8 +138,8 @@ void animation(App& app, const httplib::Request& req, httplib::Response& res) {
   const ToneMap tone = api::parse_tone_map(req.params, job->request().render.tone_mapping);
   const auto frames = finished_frames(*job);
   auto memory = reserve_frames(app, *job, frames.size(), "a turntable's animation");
-  const Frames8 frames8 = frames_rgb8(frames, size, tone);
-  send_reserved(res, encode_webp_animation(frames8.pictures(), fps), format_mime_type(ImageFormat::Webp),
+  const Frames8 pictures = frames8(frames, size, tone);
+  send_reserved(res, encode_webp_animation(pictures.pictures(), fps), format_mime_type(ImageFormat::Webp),
                 std::move(memory));
 }
 

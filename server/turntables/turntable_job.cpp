@@ -33,8 +33,9 @@ std::vector<render::Camera> turntable_cameras(const api::TurntableRequest& reque
 
 int64_t turntable_bytes(const api::TurntableRequest& request, int64_t triangles) {
   const auto& s = request.render.settings;
+  const int64_t images = s.background.mode == render::BackgroundMode::Transparent ? 2 : 1;
   return running_render_bytes(s, triangles) +
-         request.turntable.frames * EnvMap::image_bytes(s.width, s.height);
+         request.turntable.frames * images * EnvMap::image_bytes(s.width, s.height);
 }
 
 TurntableJob::TurntableJob(std::string id, api::TurntableRequest request, std::vector<render::Camera> cameras,
@@ -48,7 +49,7 @@ TurntableJob::TurntableJob(std::string id, api::TurntableRequest request, std::v
   set_work(request_.turntable.frames, 0);  // until run() counts in tiles
 }
 
-std::vector<std::shared_ptr<const Image>> TurntableJob::frames() const {
+std::vector<RenderImage> TurntableJob::frames() const {
   std::lock_guard lock(mutex_);
   return frames_;
 }
@@ -56,7 +57,11 @@ std::vector<std::shared_ptr<const Image>> TurntableJob::frames() const {
 int64_t TurntableJob::retained_bytes() const {
   std::lock_guard lock(mutex_);
   int64_t bytes = 0;
-  for (const auto& frame : frames_) bytes += int64_t(frame->data().size_bytes());
+  for (const RenderImage& frame : frames_) {
+    bytes += int64_t(frame.image->data().size_bytes());
+    for (const auto& pass : frame.passes)
+      if (pass) bytes += int64_t(pass->data().size_bytes());
+  }
   return bytes;
 }
 
@@ -66,9 +71,9 @@ void TurntableJob::ending(JobStatus, const std::optional<JobError>&) {
   memory_.set_use(MemoryUse::Held);
 }
 
-// Renders frame `index` through all its passes; nullptr when a cancel stopped it. `frame_work` is the
+// Renders frame `index` through all its passes; nullopt when a cancel stopped it. `frame_work` is the
 // work units of one frame, set by the first.
-std::shared_ptr<const Image> TurntableJob::render_frame(int index, int64_t& frame_work) {
+std::optional<RenderImage> TurntableJob::render_frame(int index, int64_t& frame_work) {
   using Clock = std::chrono::steady_clock;
   const auto& r = request_.render;
   render::SceneDesc scene = r.scene;
@@ -81,13 +86,17 @@ std::shared_ptr<const Image> TurntableJob::render_frame(int index, int64_t& fram
   const auto start = Clock::now();
   for (const render::RenderPass& pass : render::render_passes(r.settings)) {
     const auto on_tile = [this, spp = pass.spp] { add_work_done(spp); };
-    if (!renderer.render(pass, cancel_flag(), on_tile)) return nullptr;
+    if (!renderer.render(pass, cancel_flag(), on_tile)) return std::nullopt;
   }
   if (counters_) {
     const render::RenderStats stats = renderer.stats();
     counters_->add(stats.samples, stats.rays, std::chrono::duration<double>(Clock::now() - start).count());
   }
-  return std::make_shared<const Image>(renderer.image());
+  RenderImage frame{std::make_shared<const Image>(renderer.image()), r.settings.spp, {}};
+  if (r.settings.background.mode == render::BackgroundMode::Transparent)
+    frame.passes[size_t(render::AuxPass::Alpha)] =
+        std::make_shared<const Image>(renderer.image(render::AuxPass::Alpha));
+  return frame;
 }
 
 bool TurntableJob::run() {
@@ -100,7 +109,7 @@ bool TurntableJob::run() {
     auto frame = render_frame(i, frame_work);
     if (!frame) return false;
     std::lock_guard lock(mutex_);
-    frames_.push_back(std::move(frame));
+    frames_.push_back(std::move(*frame));
   }
   spdlog::info("turntable {} done after {:.2f} s", id(), elapsed_s());
   return true;

@@ -7,6 +7,7 @@
 // made again by a new request).
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "api/turntable_request.hpp"
@@ -15,6 +16,7 @@
 #include "engine/image/image.hpp"
 #include "server/jobs/job.hpp"
 #include "server/renders/render_counters.hpp"
+#include "server/renders/render_job_image.hpp"
 
 namespace lp::server {
 
@@ -22,7 +24,8 @@ namespace lp::server {
 // there is nothing to frame.
 std::vector<render::Camera> turntable_cameras(const api::TurntableRequest& request);
 
-// What a turntable reserves from the budget: a render's working memory and every frame it keeps.
+// What a turntable reserves from the budget: a render's working memory and every frame it keeps (with
+// its alpha when the background is transparent).
 int64_t turntable_bytes(const api::TurntableRequest& request, int64_t triangles);
 
 struct TurntableJobContext {
@@ -38,8 +41,9 @@ class TurntableJob : public Job {
   const api::TurntableRequest& request() const { return request_; }
   const std::vector<render::Camera>& cameras() const { return cameras_; }
   int frame_count() const { return request_.turntable.frames; }
-  // The frames finished so far, in order (frame i at index i).
-  std::vector<std::shared_ptr<const Image>> frames() const;
+  // The frames finished so far, in order (frame i at index i): each one's colour, with its alpha pass when
+  // the background is transparent.
+  std::vector<RenderImage> frames() const;
   int64_t retained_bytes() const override;
 
  protected:
@@ -48,7 +52,7 @@ class TurntableJob : public Job {
   void ending(JobStatus, const std::optional<JobError>&) override;
 
  private:
-  std::shared_ptr<const Image> render_frame(int index, int64_t& frame_work);
+  std::optional<RenderImage> render_frame(int index, int64_t& frame_work);
 
   const api::TurntableRequest request_;
   const std::vector<render::Camera> cameras_;
@@ -57,7 +61,7 @@ class TurntableJob : public Job {
   MemoryReservation memory_;
 
   mutable std::mutex mutex_;
-  std::vector<std::shared_ptr<const Image>> frames_;
+  std::vector<RenderImage> frames_;
 };
 
 }  // namespace lp::server

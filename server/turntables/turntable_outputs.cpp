@@ -58,24 +58,26 @@ std::optional<int> cell_longest_side(int width, int height, SheetLayout layout, 
 
 std::vector<Pixels8> Frames8::pictures() const {
   std::vector<Pixels8> out;
-  for (const auto& b : bytes) out.push_back({b, width, height, 3});
+  for (const auto& b : bytes) out.push_back({b, width, height, channels});
   return out;
 }
 
-Frames8 frames_rgb8(const std::vector<std::shared_ptr<const Image>>& frames, std::optional<int> size,
-                    const ToneMap& tone) {
+Frames8 frames8(const std::vector<RenderImage>& frames, std::optional<int> size, const ToneMap& tone) {
   Frames8 out;
-  for (const auto& frame : frames) {
-    const Image small = fit_longest_side(*frame, size);
+  for (const RenderImage& frame : frames) {
+    const Image small = fit_longest_side(*frame.image, size);
     out.width = small.width();
     out.height = small.height();
-    out.bytes.push_back(tone_map_rgb8(small, tone));
+    const Image* alpha = frame.pass(render::AuxPass::Alpha);
+    out.channels = alpha ? 4 : 3;
+    out.bytes.push_back(alpha ? tone_map_rgba8(small, fit_longest_side(*alpha, size), tone)
+                              : tone_map_rgb8(small, tone));
   }
   return out;
 }
 
-int64_t frames_rgb8_bytes(int64_t frames, int64_t width, int64_t height) {
-  return frames * 3 * width * height + 12 * width * height;
+int64_t frames8_bytes(int64_t frames, int64_t width, int64_t height) {
+  return frames * 4 * width * height + 24 * width * height;
 }
 
 std::vector<uint8_t> frames_zip(const Frames8& frames, const nlohmann::json& cameras) {
@@ -85,24 +87,23 @@ std::vector<uint8_t> frames_zip(const Frames8& frames, const nlohmann::json& cam
   zip_check(a.get(), archive_write_set_format_zip(a.get()), "format");
   zip_check(a.get(), archive_write_set_options(a.get(), "zip:compression=store"), "options");
   zip_check(a.get(), archive_write_open(a.get(), &out, nullptr, append_bytes, nullptr), "open");
-  for (size_t i = 0; i < frames.bytes.size(); ++i)
-    zip_member(a.get(), fmt::format("frame_{:04}.png", i),
-               encode_png_rgb8(frames.bytes[i], frames.width, frames.height));
+  const std::vector<Pixels8> pictures = frames.pictures();
+  for (size_t i = 0; i < pictures.size(); ++i)
+    zip_member(a.get(), fmt::format("frame_{:04}.png", i), encode_pixels8(pictures[i], ImageFormat::Png));
   const std::string json = cameras.dump(2) + "\n";
   zip_member(a.get(), "cameras.json", {reinterpret_cast<const uint8_t*>(json.data()), json.size()});
   zip_check(a.get(), archive_write_close(a.get()), "close");
   return out;
 }
 
-std::vector<uint8_t> frames_contact_sheet(const std::vector<std::shared_ptr<const Image>>& frames,
-                                          std::optional<int> size, const ToneMap& tone, ImageFormat format) {
+std::vector<uint8_t> frames_contact_sheet(const std::vector<RenderImage>& frames, std::optional<int> size,
+                                          const ToneMap& tone, ImageFormat format) {
   const SheetLayout layout = contact_sheet_layout(int(frames.size()));
-  const Image& first = *frames.front();
-  const Frames8 cells =
-      frames_rgb8(frames, cell_longest_side(first.width(), first.height(), layout, size), tone);
+  const Image& first = *frames.front().image;
+  const Frames8 cells = frames8(frames, cell_longest_side(first.width(), first.height(), layout, size), tone);
   const auto pictures = cells.pictures();
   const std::vector<uint8_t> sheet = contact_sheet(pictures, layout);
-  const Pixels8 picture{sheet, cells.width * layout.columns, cells.height * layout.rows, 3};
+  const Pixels8 picture{sheet, cells.width * layout.columns, cells.height * layout.rows, cells.channels};
   return encode_pixels8(picture, format);
 }
 

@@ -3,19 +3,24 @@
 // for the same request, progress goes to standard error, and bad scenes fail with the API's messages.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "engine/image/image_io.hpp"
 #include "support/cli_run.hpp"
+#include "support/exr_channels.hpp"
 #include "support/http_reply.hpp"
 #include "support/png_pixels.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
+#include "support/white_map.hpp"
+#include "support/white_sphere.hpp"
 
 namespace lp {
 namespace {
@@ -240,14 +245,99 @@ TEST(CliRender, ATransparentBackgroundGivesAPngWithAlpha) {
   EXPECT_EQ(rgba[(size_t(15) * 40 + 20) * 4 + 3], 255);  // (20, 15)
 }
 
-// Passes other than a transparent render's alpha are the server's to serve: refused before rendering.
-TEST(CliRender, PassesTheToolDoesNotWriteAreRefused) {
+std::string text_of(const std::vector<uint8_t>& bytes) {
+  return {bytes.begin(), bytes.end()};
+}
+
+// The white sphere (support/white_sphere.hpp) at 33 x 33 pixels, on a white map `envmap` names.
+json white_sphere_scene(const std::string& envmap) {
+  json body = test::white_sphere_body(envmap, 33, 4);
+  body["seed"] = 3;
+  return body;
+}
+
+// --passes with an EXR output: one EXR with every pass as a channel, named as the server's pass=all names
+// them, and equal to the server's for the same request; the albedo of the white sphere is 1 wherever the
+// sphere covers the whole pixel.
+TEST(CliRender, PassesAreTheChannelsOfOneExrAsTheServerWritesThem) {
   const test::TempDir dir;
+  write_white_map(dir.path());
+  write_text(dir.path() / "sphere.json", white_sphere_scene("white.pfm").dump());
+  const test::CliRun run = test::run_cli(
+      {"render", "sphere.json", "--passes", "albedo,normal,depth,alpha", "-o", "passes.exr", "-q"},
+      dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  const test::ExrChannels exr = test::exr_channels(text_of(test::read_bytes(dir.path() / "passes.exr")));
+  std::set<std::string> names;
+  for (const auto& [name, _] : exr.channels) names.insert(name);
+  EXPECT_EQ(names, (std::set<std::string>{"Albedo.B", "Albedo.G", "Albedo.R", "Alpha.A", "B", "Depth.Z", "G",
+                                          "Ns.X", "Ns.Y", "Ns.Z", "R"}));
+  ASSERT_EQ(exr.width, 33);
+
+  const auto& alpha = exr.channels.at("Alpha.A");
+  int covered = 0;
+  for (size_t i = 0; i < alpha.size(); ++i) {
+    if (alpha[i] < 1) continue;
+    ++covered;
+    for (const char* c : {"Albedo.R", "Albedo.G", "Albedo.B"})
+      EXPECT_NEAR(exr.channels.at(c)[i], 1.0f, 1e-3f) << c << " at " << i;
+  }
+  EXPECT_GT(covered, 200);                          // the sphere spans about 17 x 17 pixels
+  EXPECT_EQ(exr.channels.at("Albedo.R")[0], 0.0f);  // the map has none
+
+  json body = white_sphere_scene(test::ensure_white_map(*test::white_map_server().client(), "white"));
+  body["passes"] = {"albedo", "normal", "depth", "alpha"};
+  const auto client = test::white_map_server().client();
+  const json accepted =
+      test::reply(client->Post("/api/v1/renders", body.dump(), "application/json")).body_json();
+  const std::string id = accepted["id"];
+  EXPECT_EQ(test::finished_render(*client, id)["status"], "done");
+  const test::Reply all =
+      test::reply(client->Get(("/api/v1/renders/" + id + "/image?pass=all&format=exr").c_str()));
+  const test::ExrChannels served = test::exr_channels(all.body);
+  ASSERT_EQ(served.channels.size(), exr.channels.size());
+  for (const auto& [name, values] : served.channels) {
+    const auto& rendered = exr.channels.at(name);
+    ASSERT_EQ(rendered.size(), values.size()) << name;
+    for (size_t i = 0; i < values.size(); ++i)
+      if (std::isinf(values[i]))
+        EXPECT_EQ(rendered[i], values[i]) << name << " at " << i;
+      else
+        EXPECT_NEAR(rendered[i], values[i], 1e-5f * (1 + std::abs(values[i]))) << name << " at " << i;
+  }
+}
+
+// --passes with a PNG output: the colour in OUT and each pass beside it as OUT.NAME.png, as the server's
+// PNG of that pass (depth: white at the nearest point, black where no ray hit).
+TEST(CliRender, PassesBesideAPngAreFilesOfTheirOwn) {
+  const test::TempDir dir;
+  write_white_map(dir.path());
+  write_text(dir.path() / "sphere.json", white_sphere_scene("white.pfm").dump());
+  const test::CliRun run = test::run_cli(
+      {"render", "sphere.json", "--passes", "albedo,depth", "-o", "thumb.png", "-q"}, dir.path());
+  ASSERT_EQ(run.exit_status, 0) << run.err;
+  for (const char* file : {"thumb.png", "thumb.albedo.png"})
+    EXPECT_EQ(test::decode_png(test::read_bytes(dir.path() / file)).width, 33) << file;
+  const test::PngPixels depth = test::decode_png(test::read_bytes(dir.path() / "thumb.depth.png"));
+  ASSERT_EQ(depth.width, 33);
+  EXPECT_EQ(depth.rgb[0], 0);
+  EXPECT_EQ(depth.rgb[(size_t(16) * 33 + 16) * 3], 255);
+}
+
+// A pass that would be a file of its own has nowhere to go on standard output or beside a turntable's
+// frames: refused before rendering.
+TEST(CliRender, PassesWithNowhereToGoAreRefused) {
+  const test::TempDir dir;
+  const std::string message =
+      "bad_request: the 'depth' pass is written as a file of its own beside -o FILE unless the output is "
+      "EXR: ";
   test::expect_cli_refusals(
-      {"render", test::model_path("quad.glb").string(), "-o", "a.exr"},
-      {{{"--passes", R"(["depth"])"},
-        "bad_request: the tool writes a render's colour (and its alpha when the background is transparent), "
-        "not its 'depth' pass: ask the server for passes (GET /api/v1/renders/{id}/image?pass=NAME)"}},
+      {"render", test::model_path("quad.glb").string(), "--passes", "depth"},
+      {{{"--format", "png"},
+        message + "give -o FILE; ask for format exr, or leave the pass out of \"passes\""},
+       {{"--turntable", "2", "-o", "."},
+        message + "a turntable writes no passes beside its frames; ask for format exr, or leave the pass out "
+                  "of \"passes\""}},
       dir.path());
 }
 

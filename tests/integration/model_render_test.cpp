@@ -128,8 +128,7 @@ TEST(ModelRender, AModelFileReplacedOnDiskIsLoadedAgain) {
 // The mean colour of an 8 x 8 render of the quad of test::write_textured_quad at `mesh_path` (an OBJ
 // written z-up, in z = 0), seen face-on so that it fills the view, under a constant white map.
 Rgb quad_colour(const ModelServer& s, const std::string& mesh_path) {
-  const Reply up = test::upload_white_map(*s.client(), "white");
-  EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;  // 409: uploaded by an earlier call
+  test::ensure_white_map(*s.client(), "white");
   json body = mesh_scene(mesh_path);
   body["envmap"] = "white";
   body["scene"]["objects"][0]["up_axis"] = "z";

@@ -50,11 +50,7 @@ Rgb json_rgb(const json& j) {
 }
 
 const std::string& white() {
-  static const std::string name = [] {
-    const Reply r = test::upload_white_map(*test::shared_server().client(), "projection_white");
-    EXPECT_TRUE(r.status == 201 || r.status == 409) << r.body;
-    return std::string("projection_white");
-  }();
+  static const std::string name = test::ensure_white_map(*test::shared_server().client(), "projection_white");
   return name;
 }
 

@@ -285,6 +285,14 @@ TEST(RedisScaleOut, AWorkerRendersItemsAtTheRenderPriorityAndTakesNoRenderOfItsO
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, 409);
   EXPECT_EQ(json::parse(refused->body)["error"]["code"], "worker_only") << refused->body;
+  const auto turntable = worker.client()->Post(
+      "/api/v1/turntables",
+      R"({"envmap": "white", "scene": {"objects": [{"type": "sphere"}]}, "width": 8, "height": 8,
+          "spp": 1, "turntable": {"frames": 2}})",
+      "application/json");
+  ASSERT_TRUE(turntable);
+  EXPECT_EQ(turntable->status, 409);
+  EXPECT_EQ(json::parse(turntable->body)["error"]["code"], "worker_only") << turntable->body;
   const std::string id = submit(*cluster.api, body(4096, 3));
   ASSERT_TRUE(worker.wait_log("render " + id + " samples")) << worker.log();
   std::this_thread::sleep_for(200ms);  // the arena's threads join the item

@@ -1,17 +1,13 @@
 // Backgrounds, passes and the ground through the real server: a transparent render's corner has alpha 0
 // and its sphere alpha 1 in the alpha pass, the RGBA PNG (straight alpha) and the RGBA EXR
-// (premultiplied); the albedo, normal and depth passes of a white sphere; pass=all as one EXR whose
-// channels OpenEXR reads by name; a shadow catcher's alpha; and the refusals (a pass not asked for, pass=all
-// outside EXR, bad fields).
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
+// (premultiplied), the RGBA WebP and its thumbnail, the JPEG over white; the albedo, normal and depth passes
+// of a white sphere; pass=all as one EXR whose channels OpenEXR reads by name; a shadow catcher's alpha; and
+// the refusals (a pass not asked for, pass=all outside EXR, bad fields).
 #include <gtest/gtest.h>
 #include <stb_image.h>
+#include <webp/decode.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -19,11 +15,12 @@
 #include <vector>
 
 #include "engine/image/image_io.hpp"
+#include "support/exr_channels.hpp"
 #include "support/http_reply.hpp"
 #include "support/render_polling.hpp"
 #include "support/server_process.hpp"
-#include "support/temp_dir.hpp"
 #include "support/white_map.hpp"
+#include "support/white_sphere.hpp"
 
 namespace lp {
 namespace {
@@ -34,14 +31,7 @@ using test::Reply;
 constexpr int kSize = 33;  // odd: the centre pixel looks at the sphere's nearest point
 
 test::ServerProcess& server() {
-  static test::ServerProcess s;
-  static const bool uploaded = [] {
-    const Reply up = test::upload_white_map(*s.client(), "white");
-    EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;
-    return true;
-  }();
-  (void)uploaded;
-  return s;
+  return test::white_map_server();
 }
 
 Reply get(const std::string& path) {
@@ -54,17 +44,7 @@ Reply post_render(const json& body) {
 
 // A white diffuse sphere of radius 1 at the origin, seen from 4 units on -y, on the white map.
 json sphere_body(json extra) {
-  json body = {{"envmap", "white"},
-               {"width", kSize},
-               {"height", kSize},
-               {"spp", 8},
-               {"scene",
-                {{"objects",
-                  {{{"type", "sphere"},
-                    {"center", {0, 0, 0}},
-                    {"radius", 1},
-                    {"material", {{"type", "diffuse"}, {"albedo", 1}}}}}},
-                 {"camera", {{"position", {0, -4, 0}}, {"look_at", {0, 0, 0}}, {"fov_deg", 40}}}}}};
+  json body = test::white_sphere_body("white", kSize, 8);
   if (extra.is_object()) body.update(extra);
   return body;
 }
@@ -83,26 +63,11 @@ Image decode(const Reply& r) {
   return read_image({reinterpret_cast<const uint8_t*>(r.body.data()), r.body.size()}).image;
 }
 
-// The channels of an EXR, by name, through OpenEXR (from a file: its API reads files or its streams).
+// The channels of an EXR by name, and its width.
 std::map<std::string, std::vector<float>> exr_channels(const std::string& bytes, int& width) {
-  test::TempDir dir;
-  const std::string path = (dir.path() / "passes.exr").string();
-  std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-  Imf::InputFile file(path.c_str());
-  const Imath::Box2i window = file.header().dataWindow();
-  width = window.max.x - window.min.x + 1;
-  const int height = window.max.y - window.min.y + 1;
-  std::map<std::string, std::vector<float>> out;
-  Imf::FrameBuffer fb;
-  for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c) {
-    auto& values = out[c.name()];
-    values.resize(size_t(width) * size_t(height));
-    fb.insert(c.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
-                                   sizeof(float) * size_t(width)));
-  }
-  file.setFrameBuffer(fb);
-  file.readPixels(window.min.y, window.max.y);
-  return out;
+  test::ExrChannels exr = test::exr_channels(bytes);
+  width = exr.width;
+  return std::move(exr.channels);
 }
 
 TEST(RenderPassesApi, ATransparentRenderHasAlphaZeroInItsCornerAndOneOnTheSphere) {
@@ -139,6 +104,70 @@ TEST(RenderPassesApi, ATransparentRenderHasAlphaZeroInItsCornerAndOneOnTheSphere
   EXPECT_EQ(exr.at("A")[0], 0.0f);
   EXPECT_EQ(exr.at("R")[0], 0.0f);  // premultiplied: nothing where nothing is
   EXPECT_EQ(exr.at("A")[size_t(c) * size_t(width) + size_t(c)], 1.0f);
+}
+
+// 8-bit RGBA of a PNG, WebP or JPEG (RGB: alpha 255), decoded by stb or libwebp.
+struct Rgba8 {
+  int width = 0, height = 0;
+  bool has_alpha = false;
+  std::vector<uint8_t> bytes;
+  const uint8_t* at(int x, int y) const { return &bytes[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+};
+
+Rgba8 decode_webp(const Reply& r) {
+  Rgba8 out;
+  const auto* data = reinterpret_cast<const uint8_t*>(r.body.data());
+  WebPBitstreamFeatures features;
+  if (WebPGetFeatures(data, r.body.size(), &features) != VP8_STATUS_OK) return out;
+  out.has_alpha = features.has_alpha;
+  uint8_t* rgba = WebPDecodeRGBA(data, r.body.size(), &out.width, &out.height);
+  if (!rgba) return out;
+  out.bytes.assign(rgba, rgba + size_t(out.width) * size_t(out.height) * 4);
+  WebPFree(rgba);
+  return out;
+}
+
+Rgba8 decode_stb(const Reply& r) {
+  Rgba8 out;
+  int channels = 0;
+  stbi_uc* rgba = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(r.body.data()), int(r.body.size()),
+                                        &out.width, &out.height, &channels, 4);
+  if (!rgba) return out;
+  out.has_alpha = channels == 4;
+  out.bytes.assign(rgba, rgba + size_t(out.width) * size_t(out.height) * 4);
+  stbi_image_free(rgba);
+  return out;
+}
+
+// WebP keeps the alpha of a transparent render, at full size and as a thumbnail; JPEG, which has none,
+// shows the PNG's RGBA over white: the corner white, the sphere's centre the PNG's colour.
+TEST(RenderPassesApi, ATransparentRenderKeepsItsAlphaInWebpAndIsOverWhiteInJpeg) {
+  const std::string id = rendered(sphere_body({{"background", "transparent"}}));
+  const int c = kSize / 2;
+  const std::string image = "/api/v1/renders/" + id + "/image?format=";
+  for (const std::string query : {"webp", "webp&size=17"}) {
+    SCOPED_TRACE(query);
+    const Reply r = get(image + query);
+    ASSERT_EQ(r.status, 200) << r.body;
+    EXPECT_EQ(r.type(), "image/webp");
+    const Rgba8 webp = decode_webp(r);
+    ASSERT_FALSE(webp.bytes.empty());
+    EXPECT_TRUE(webp.has_alpha);
+    const int m = webp.width / 2;
+    EXPECT_EQ(webp.at(0, 0)[3], 0);  // the map: transparent
+    EXPECT_EQ(webp.at(webp.width - 1, webp.height - 1)[3], 0);
+    EXPECT_EQ(webp.at(m, m)[3], 255);  // the sphere: opaque
+    EXPECT_GT(webp.at(m, m)[0], 100);  // lit, straight colour
+  }
+
+  const Rgba8 png = decode_stb(get(image + "png"));
+  const Rgba8 jpeg = decode_stb(get(image + "jpeg"));
+  ASSERT_EQ(jpeg.width, kSize);
+  EXPECT_FALSE(jpeg.has_alpha);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_GE(jpeg.at(0, 0)[k], 250);  // white, up to JPEG's loss
+    EXPECT_NEAR(jpeg.at(c, c)[k], png.at(c, c)[k], 6);
+  }
 }
 
 TEST(RenderPassesApi, AlbedoNormalAndDepthOfAWhiteSphereAndEveryPassInOneExr) {

@@ -25,11 +25,7 @@ Reply get(const std::string& path) {
 }
 
 const std::string& white() {
-  static const std::string name = [] {
-    const Reply r = test::upload_white_map(*test::shared_server().client(), "sh_white");
-    EXPECT_TRUE(r.status == 201 || r.status == 409) << r.body;
-    return std::string("sh_white");
-  }();
+  static const std::string name = test::ensure_white_map(*test::shared_server().client(), "sh_white");
   return name;
 }
 

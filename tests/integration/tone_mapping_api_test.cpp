@@ -20,14 +20,7 @@ using test::reply;
 using test::Reply;
 
 const test::ServerProcess& server() {
-  static test::ServerProcess s;
-  static const bool uploaded = [] {
-    const Reply up = test::upload_white_map(*s.client(), "white");
-    EXPECT_TRUE(up.status == 201 || up.status == 409) << up.body;
-    return true;
-  }();
-  (void)uploaded;
-  return s;
+  return test::white_map_server();
 }
 
 Reply get(const std::string& path) {

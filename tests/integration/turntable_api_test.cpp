@@ -5,6 +5,7 @@
 #include <archive.h>
 #include <archive_entry.h>
 #include <gtest/gtest.h>
+#include <stb_image.h>
 #include <webp/decode.h>
 #include <webp/demux.h>
 
@@ -184,6 +185,64 @@ TEST(TurntableApi, ContactSheetTilesTheFramesTwoByTwo) {
   const Decoded jpeg = decode_stb(small.body);
   EXPECT_EQ(jpeg.width, 40);
   EXPECT_EQ(jpeg.height, 40);
+}
+
+// The RGBA pixels of the first frame of an animated WebP (libwebp's demuxer); empty if it cannot decode.
+std::vector<uint8_t> first_webp_frame(const std::string& bytes, int& width) {
+  WebPData data{reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()};
+  WebPAnimDecoderOptions options;
+  if (!WebPAnimDecoderOptionsInit(&options)) return {};
+  options.color_mode = MODE_RGBA;
+  WebPAnimDecoder* decoder = WebPAnimDecoderNew(&data, &options);
+  if (!decoder) return {};
+  WebPAnimInfo info;
+  uint8_t* pixels = nullptr;
+  int ms = 0;
+  std::vector<uint8_t> out;
+  if (WebPAnimDecoderGetInfo(decoder, &info) && WebPAnimDecoderGetNext(decoder, &pixels, &ms)) {
+    width = int(info.canvas_width);
+    out.assign(pixels, pixels + size_t(info.canvas_width) * info.canvas_height * 4);
+  }
+  WebPAnimDecoderDelete(decoder);
+  return out;
+}
+
+// A turntable on a transparent background keeps its alpha: the corner of a frame (WebP and PNG), of the
+// animated WebP and of the zip's PNG frames is transparent, the model in the middle opaque.
+TEST(TurntableApi, ATransparentTurntableKeepsItsAlpha) {
+  json body = turntable_body(2, 32, 2);
+  body["background"] = "transparent";
+  const Reply r = post("/api/v1/turntables", body);
+  ASSERT_EQ(r.status, 202) << r.body;
+  const std::string url = r.header("Location");
+  ASSERT_EQ(test::finished_job(*server().client(), url)["status"], "done");
+  const auto expect_cut_out = [](const uint8_t* rgba, int width, const std::string& what) {
+    EXPECT_EQ(rgba[3], 0) << what;
+    EXPECT_EQ(rgba[(size_t(width / 2) * size_t(width) + size_t(width / 2)) * 4 + 3], 255) << what;
+  };
+  int width = 0;
+  const std::vector<uint8_t> animation = first_webp_frame(get(url + "/animation.webp").body, width);
+  ASSERT_EQ(width, 32);
+  expect_cut_out(animation.data(), width, "animation.webp");
+
+  const Reply webp = get(url + "/frames/0?format=webp");
+  int height = 0;
+  uint8_t* frame =
+      WebPDecodeRGBA(reinterpret_cast<const uint8_t*>(webp.body.data()), webp.body.size(), &width, &height);
+  ASSERT_NE(frame, nullptr);
+  expect_cut_out(frame, width, "frames/0?format=webp");
+  WebPFree(frame);
+
+  const auto members = unzip(get(url + "/frames.zip").body);
+  ASSERT_TRUE(members.count("frame_0000.png"));
+  const std::string& png = members.at("frame_0000.png");
+  int channels = 0;
+  stbi_uc* rgba = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.data()), int(png.size()), &width,
+                                        &height, &channels, 4);
+  ASSERT_NE(rgba, nullptr);
+  EXPECT_EQ(channels, 4);
+  expect_cut_out(rgba, width, "frames.zip");
+  stbi_image_free(rgba);
 }
 
 TEST(TurntableApi, CancelStopsItMidWay) {

@@ -1,9 +1,11 @@
-// The 8-bit encoders (JPEG, WebP, animated WebP) decode back to their pictures; thumbnails keep the
-// aspect, never enlarge, and keep a picture's mean radiance; contact sheets tile frames in order.
+// The 8-bit encoders (JPEG, WebP, animated WebP) decode back to their pictures (RGBA as JPEG over white);
+// thumbnails keep the aspect, never enlarge, and keep a picture's mean radiance; contact sheets tile frames
+// in order.
 #include <gtest/gtest.h>
 #include <stb_image.h>
 #include <webp/decode.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -51,6 +53,35 @@ TEST(Thumbnail, WebpKeepsAlpha) {
   EXPECT_EQ(back[(5 * 32 + 2) * 4 + 3], 0);     // the left half transparent
   EXPECT_EQ(back[(5 * 32 + 30) * 4 + 3], 255);  // the right half opaque
   WebPFree(back);
+}
+
+// JPEG has no alpha: an RGBA picture is shown over white (its transparent half white, its opaque half its
+// colour), as a white page shows it; PNG keeps the alpha.
+TEST(Thumbnail, RgbaIsJpegOverWhiteAndPngWithAlpha) {
+  const auto pixels = gradient(32, 16, 4);
+  const auto jpeg = encode_pixels8({pixels, 32, 16, 4}, ImageFormat::Jpeg);
+  int w = 0, h = 0, n = 0;
+  uint8_t* back = stbi_load_from_memory(jpeg.data(), int(jpeg.size()), &w, &h, &n, 0);
+  ASSERT_NE(back, nullptr);
+  EXPECT_EQ(n, 3);
+  double transparent = 0, opaque = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const size_t at = size_t((y * 32 + x) * 3 + c);
+        if (x < 12) transparent += std::abs(double(back[at]) - 255.0);
+        if (x >= 20) opaque += std::abs(double(back[at]) - double(pixels[size_t((y * 32 + x) * 4 + c)]));
+      }
+  stbi_image_free(back);
+  EXPECT_LT(transparent / (12 * 16 * 3), 2.0);
+  EXPECT_LT(opaque / (12 * 16 * 3), 4.0);
+
+  const auto png = encode_pixels8({pixels, 32, 16, 4}, ImageFormat::Png);
+  uint8_t* rgba = stbi_load_from_memory(png.data(), int(png.size()), &w, &h, &n, 0);
+  ASSERT_NE(rgba, nullptr);
+  EXPECT_EQ(n, 4);
+  EXPECT_TRUE(std::equal(pixels.begin(), pixels.end(), rgba));
+  stbi_image_free(rgba);
 }
 
 TEST(Thumbnail, EncodersRefuseWrongSizes) {
