@@ -36,10 +36,11 @@ class UNet {
   // function's space. Runs on the calling thread's oneDNN (OpenMP) threads.
   void run(const float* input, int height, int width, float* output) const;
 
+  struct Engine;  // oneDNN's engine and the weights reordered for it
+
  private:
   int input_channels_;
   std::vector<ConvLayer> layers_;
-  struct Engine;
   std::unique_ptr<Engine> engine_;
 };
 
