@@ -5,6 +5,7 @@
 #include "api/brdf_lut_request.hpp"
 #include "api/fresnel_request.hpp"
 #include "api/prefilter_request.hpp"
+#include "api/render_image_pass.hpp"
 #include "api/sample_request.hpp"
 #include "api/sh_request.hpp"
 #include "api/thumbnail_params.hpp"
@@ -149,6 +150,11 @@ void add_render_ranges(std::vector<Doc>& d) {
   d.push_back(lower_bound_doc(request("max_depth"), double(kMaxDepth.min), settings.max_depth));
   d.push_back(enum_doc(request("sampling"), std::optional(settings.sampling)));
   d.push_back(bool_doc(request(kRenderDenoise.name), kRenderDenoise));
+  d.push_back({query("/api/v1/renders/{id}/image", "get", "pass"),
+               render_image_pass_names(),
+               {},
+               {},
+               kColorPassName});
   d.push_back(lower_bound_doc(request("seed"), 0, double(settings.seed)));
   d.push_back(range_doc(schema("RenderCamera", {"properties", "fov_deg"}), kFovDeg, camera.fov_deg));
   const render::CameraFit fit;
