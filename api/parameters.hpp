@@ -121,9 +121,11 @@ struct BoolField {
   bool fallback;
 };
 // A render's colour denoised after its last pass (which then also computes the albedo and normal passes):
-// off for renders, whose raw colour stays the result one measures error on; on for turntables' frames.
+// off for renders, whose raw colour stays the result one measures error on; on for turntables' frames and
+// for `lightprobe render MODEL`, the one-command thumbnail of a model file.
 inline constexpr BoolField kRenderDenoise{"denoise", false};
 inline constexpr BoolField kTurntableDenoise{"denoise", true};
+inline constexpr BoolField kThumbnailDenoise{"denoise", true};
 
 // Where api/openapi.yaml states a parameter, and what it must state: `location` is a path of keys from
 // the document's root; in a list, "name=X" picks the parameter named X and "type=X" the schema whose

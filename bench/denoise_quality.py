@@ -2,11 +2,12 @@
 """The denoiser's worth in error and time, with the command-line tool only.
 
 For each scene (the `materials` preset, and a textured glTF model framed by the default camera), on one
-map: a converged reference at REF_SPP; renders at 4, 16 and 64 spp with their albedo and normal passes,
-denoised by `lightprobe denoise` (OIDN's rt_hdr_alb_nrm); raw renders at 64, 256 and 1024 spp. Prints
-each image's relMSE against the reference, mean over pixels and channels of (x - ref)^2 / (ref^2 + 0.01)
-(the relative MSE of the denoising literature, Rousselle et al. 2011, as OIDN's training reports it),
-and the wall time of each render and denoise.
+map: a converged reference at REF_SPP (a seed of its own, so that no render shares its samples); renders
+at 4, 16 and 64 spp with their albedo and normal passes, denoised by `lightprobe denoise` (OIDN's
+rt_hdr_alb_nrm); raw renders at 64, 256 and 1024 spp. Prints each image's relMSE against the reference,
+the mean over pixels and channels of (x - ref)^2 / (ref^2 + 0.01) (the relative MSE of the denoising
+literature, Rousselle et al. 2011), and the wall time of each render and denoise. The reference's own
+noise is in every figure: about the raw 1024 spp figure times 1024 / REF_SPP.
 
     bench/denoise_quality.py [--build build] [--size 256] [--ref-spp 4096] [--map tests/data/envmaps/forest.exr]
 """
@@ -56,9 +57,9 @@ class Scene:
     def __init__(self, name, source, args, work):
         self.name, self.source, self.args, self.work = name, source, args, work
 
-    def render(self, spp, out, passes=False):
+    def render(self, spp, out, passes=False, seed=0):
         command = [self.args.lightprobe, "render", self.source, "--width", str(self.args.size),
-                   "--height", str(self.args.size), "--spp", str(spp), "-q", "-o", out]
+                   "--height", str(self.args.size), "--spp", str(spp), "--seed", str(seed), "-q", "-o", out]
         if self.source.endswith(".glb"):
             command += ["--envmap", self.args.map]
         if passes:
@@ -72,7 +73,7 @@ class Scene:
 
     def study(self):
         reference_path = os.path.join(self.work, f"{self.name}_ref.pfm")
-        seconds = self.render(self.args.ref_spp, reference_path)
+        seconds = self.render(self.args.ref_spp, reference_path, seed=1)  # samples of its own
         print(f"{self.name}: reference {self.args.ref_spp} spp, {seconds:.1f} s", flush=True)
         reference = read_pfm(reference_path)
         rows = []

@@ -54,8 +54,8 @@ std::string request_options_help() {
                                  enum_names_joined<render::AuxPass>())) +
          option_line("--denoise",
                      "denoise the colour after the last pass (Open Image Denoise's network, with the\n"
-                     "albedo and normal it then computes); a turntable's frames are denoised unless\n"
-                     "--no-denoise");
+                     "albedo and normal it then computes); a MODEL's picture and a turntable's frames\n"
+                     "are denoised unless --no-denoise");
 }
 
 }  // namespace lp::cli

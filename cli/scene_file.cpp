@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "api/api_error.hpp"
+#include "api/parameters.hpp"
 #include "api/turntable_request.hpp"
 #include "cli/map_argument.hpp"
 #include "engine/core/error.hpp"
@@ -58,7 +59,9 @@ void append_objects(api::Json& body, const api::Json& objects, std::string_view 
 }  // namespace
 
 api::Json model_body(const std::filesystem::path& model) {
-  return {{"envmap", "default"}, {"scene", {{"objects", {{{"type", "mesh"}, {"path", model.string()}}}}}}};
+  return {{"envmap", "default"},
+          {"scene", {{"objects", {{{"type", "mesh"}, {"path", model.string()}}}}}},
+          {api::kThumbnailDenoise.name, api::kThumbnailDenoise.fallback}};
 }
 
 SceneRender read_scene(const std::filesystem::path& file, const api::Json& overrides,
