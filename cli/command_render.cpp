@@ -17,6 +17,7 @@
 #include "cli/render_fields.hpp"
 #include "cli/render_picture.hpp"
 #include "cli/scene_file.hpp"
+#include "cli/thread_option.hpp"
 #include "cli/turntable_files.hpp"
 #include "cli/turntable_options.hpp"
 #include "engine/denoise/denoiser.hpp"
@@ -44,18 +45,13 @@ std::string help() {
          fmt::format("Limits: width up to {}, height up to {}, spp up to {}, max_depth up to {}.\n\n",
                      l.max_render_width, l.max_render_height, l.max_render_spp, l.max_render_depth) +
          image_params_help(ToneOption::RequestField) + request_options_help() + turntable_help() +
-         option_line("--threads N",
-                     fmt::format("{}, in [{}, {}] (default: {})", api::kThreads.help, api::kThreads.range.min,
-                                 api::kThreads.range.max, api::kThreads.default_text)) +
-         option_line("-q, --quiet", "no progress") + output_help() +
+         threads_help() + option_line("-q, --quiet", "no progress") + output_help() +
          "\nAn image is not written to a terminal: give -o FILE or redirect standard output (-o - insists).\n"
          "A missing output folder is refused before rendering.\n";
 }
 
 std::optional<tbb::global_control> thread_limit(Arguments& args) {
-  const auto& t = api::kThreads;
-  const int64_t threads =
-      api::query_int(args.take_query({"threads"}), "threads", 0, t.range.min, t.range.max);
+  const int threads = take_threads(args);
   if (threads == 0) return std::nullopt;
   return std::optional<tbb::global_control>(std::in_place, tbb::global_control::max_allowed_parallelism,
                                             size_t(threads));
