@@ -1,6 +1,6 @@
 #pragma once
 // KTX 2.0 (Khronos Texture) files of one 2D texture or one cube map with its mip levels, uncompressed
-// RGBA floats:
+// RGBA floats (or a cube map in ASTC HDR blocks):
 // VK_FORMAT_R16G16B16A16_SFLOAT (half) or VK_FORMAT_R32G32B32A32_SFLOAT (float), alpha 1, linear,
 // BT.709 primaries, no supercompression, orientation "rd" (row 0 at the top), and key/value metadata.
 #include <cstdint>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/image/astc.hpp"
 #include "engine/image/image.hpp"
 #include "engine/image/image_io.hpp"
 
@@ -36,6 +37,10 @@ std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision pr
 // level 0's (at most floor(log2(N)) + 1 levels).
 std::vector<uint8_t> write_ktx2_cube(std::span<const Image> levels, PixelPrecision precision,
                                      const std::map<std::string, std::string>& metadata = {});
+// A cube map in VK_FORMAT_ASTC_4x4_SFLOAT_BLOCK (ASTC HDR, engine/image/astc.hpp), the same chain of
+// levels as write_ktx2_cube's compressed face by face with `options`; read_ktx2 does not read it back.
+std::vector<uint8_t> write_ktx2_astc_cube(std::span<const Image> levels, const AstcOptions& options,
+                                          const std::map<std::string, std::string>& metadata = {});
 // Face `face` of a cube map's level (N x 6N), N x N.
 Image ktx2_cube_face(const Image& level, int face);
 

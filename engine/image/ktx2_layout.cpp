@@ -6,9 +6,10 @@ namespace lp::ktx2 {
 namespace {
 
 constexpr uint32_t kVersionNumber = 2;
-constexpr uint32_t kColorModelRgbsda = 1, kPrimariesBt709 = 1, kTransferLinear = 1;
+constexpr uint32_t kColorModelRgbsda = 1, kColorModelAstc = 162, kPrimariesBt709 = 1, kTransferLinear = 1;
 constexpr uint32_t kQualifierFloat = 0x80, kQualifierSigned = 0x40;
 constexpr uint32_t kChannelIds[kChannels] = {0, 1, 2, 15};
+constexpr uint32_t kChannelAstcData = 0;
 constexpr uint32_t kBlockHeaderWords = 6, kSampleWords = 4;
 
 }  // namespace
@@ -33,6 +34,24 @@ std::vector<uint32_t> data_format_descriptor(PixelPrecision p) {
     words.push_back(std::bit_cast<uint32_t>(1.0f));                               // sampleUpper
   }
   return words;
+}
+
+std::vector<uint32_t> astc_4x4_sfloat_descriptor() {
+  const uint32_t block_bytes = 4 * (kBlockHeaderWords + kSampleWords);
+  const uint32_t block_edge = 4, bits = 128;
+  return {
+      4 + block_bytes,
+      0,
+      kVersionNumber | block_bytes << 16,
+      kColorModelAstc | kPrimariesBt709 << 8 | kTransferLinear << 16,
+      (block_edge - 1) | (block_edge - 1) << 8,  // texelBlockDimension0..3: 4 x 4 (x 1 x 1)
+      bits / 8,                                  // bytesPlane0
+      0,
+      (bits - 1) << 16 | (kChannelAstcData | kQualifierFloat | kQualifierSigned) << 24,  // bit offset 0
+      0,
+      std::bit_cast<uint32_t>(-1.0f),
+      std::bit_cast<uint32_t>(1.0f),
+  };
 }
 
 }  // namespace lp::ktx2

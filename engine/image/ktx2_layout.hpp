@@ -20,8 +20,9 @@ inline constexpr size_t kLevelIndexEntryBytes = 3 * 8;  // byteOffset, byteLengt
 inline constexpr int kChannels = 4;
 inline constexpr int kCubeFaces = 6;
 
-inline constexpr uint32_t kVkFormatRgba16Sfloat = 97;   // VK_FORMAT_R16G16B16A16_SFLOAT
-inline constexpr uint32_t kVkFormatRgba32Sfloat = 109;  // VK_FORMAT_R32G32B32A32_SFLOAT
+inline constexpr uint32_t kVkFormatRgba16Sfloat = 97;           // VK_FORMAT_R16G16B16A16_SFLOAT
+inline constexpr uint32_t kVkFormatRgba32Sfloat = 109;          // VK_FORMAT_R32G32B32A32_SFLOAT
+inline constexpr uint32_t kVkFormatAstc4x4Sfloat = 1000066000;  // VK_FORMAT_ASTC_4x4_SFLOAT_BLOCK(_EXT)
 
 inline uint32_t vk_format(PixelPrecision p) {
   return p == PixelPrecision::Half ? kVkFormatRgba16Sfloat : kVkFormatRgba32Sfloat;
@@ -41,5 +42,9 @@ inline uint32_t level_alignment(PixelPrecision p) {
 // straight alpha, 1 x 1 texel blocks, and one sample per channel (R, G, B, A = 0, 1, 2, 15), each a
 // signed float of its bits over [-1, 1] (the bounds of a float sample).
 std::vector<uint32_t> data_format_descriptor(PixelPrecision p);
+// The descriptor of ASTC 4x4 SFLOAT (as the KTX 2.0 specification and the Khronos Data Format
+// Specification's ASTC section give it): colour model ASTC, BT.709 primaries, linear transfer, 4 x 4 texel
+// blocks of 16 bytes, one sample of 128 bits of ASTC data, qualified signed float over [-1, 1].
+std::vector<uint32_t> astc_4x4_sfloat_descriptor();
 
 }  // namespace lp::ktx2

@@ -1,13 +1,16 @@
 // KTX 2.0 writer: header, index, level index, Data Format Descriptor, key/value data, then the levels
-// from the smallest to the largest, each on its alignment, little-endian throughout.
+// from the smallest to the largest, each on its alignment, little-endian throughout; RGBA floats or ASTC
+// HDR blocks.
 #include <Imath/half.h>
 #include <fmt/format.h>
 
 #include <array>
 #include <bit>
 #include <cstring>
+#include <functional>
 
 #include "engine/core/error.hpp"
+#include "engine/image/astc.hpp"
 #include "engine/image/ktx2.hpp"
 #include "engine/image/ktx2_layout.hpp"
 
@@ -95,19 +98,58 @@ void put_pixels(Writer& out, const Image& image, PixelPrecision precision) {
   }
 }
 
-std::vector<uint8_t> write(std::span<const Image> levels, int faces, PixelPrecision precision,
+// What the file's format fixes: the header's vkFormat and typeSize, the levels' alignment, the Data Format
+// Descriptor, and how a level's bytes are made from its image.
+struct Format {
+  uint32_t vk_format;
+  uint32_t type_size;
+  uint32_t alignment;
+  std::vector<uint32_t> descriptor;
+  std::function<size_t(const Image&)> level_bytes;
+  std::function<void(Writer&, const Image&)> put_level;
+};
+
+Format uncompressed(PixelPrecision precision) {
+  return {
+      ktx2::vk_format(precision),
+      ktx2::component_bytes(precision),
+      ktx2::level_alignment(precision),
+      ktx2::data_format_descriptor(precision),
+      [precision](const Image& level) { return size_t(level.pixel_count()) * ktx2::texel_bytes(precision); },
+      [precision](Writer& out, const Image& level) { put_pixels(out, level, precision); }};
+}
+
+// typeSize 1 and levels on 16 bytes (lcm of the block size and 4), as the specification asks of a block-
+// compressed format; a cube level's faces one after the other, each its own blocks.
+Format astc_cube(AstcHdrEncoder& encoder) {
+  const auto face_size = [](const Image& level) { return level.width(); };
+  return {ktx2::kVkFormatAstc4x4Sfloat,
+          1,
+          uint32_t(kAstcBlockBytes),
+          ktx2::astc_4x4_sfloat_descriptor(),
+          [face_size](const Image& level) {
+            return ktx2::kCubeFaces * astc_bytes(face_size(level), face_size(level));
+          },
+          [&encoder](Writer& out, const Image& level) {
+            for (int f = 0; f < ktx2::kCubeFaces; ++f) {
+              const std::vector<uint8_t> blocks = encoder.compress(ktx2_cube_face(level, f));
+              out.put_bytes(blocks.data(), blocks.size());
+            }
+          }};
+}
+
+std::vector<uint8_t> write(std::span<const Image> levels, int faces, const Format& format,
                            const std::map<std::string, std::string>& metadata) {
   check_chain(levels, faces);
   const uint32_t level_count = uint32_t(levels.size());
   Writer out;
   size_t pixel_bytes = 0;
-  for (const Image& level : levels) pixel_bytes += size_t(level.pixel_count()) * ktx2::texel_bytes(precision);
-  out.reserve(pixel_bytes + levels.size() * ktx2::level_alignment(precision) + 4096);
+  for (const Image& level : levels) pixel_bytes += format.level_bytes(level);
+  out.reserve(pixel_bytes + levels.size() * format.alignment + 4096);
   out.put_bytes(ktx2::kIdentifier.data(), ktx2::kIdentifier.size());
   for (const uint32_t field :
-       {ktx2::vk_format(precision), ktx2::component_bytes(precision), uint32_t(levels[0].width()),
-        uint32_t(levels[0].height() / faces), 0u /* depth */, 0u /* layers */, uint32_t(faces), level_count,
-        0u /* supercompression */})
+       {format.vk_format, format.type_size, uint32_t(levels[0].width()), uint32_t(levels[0].height() / faces),
+        0u /* depth */, 0u /* layers */, uint32_t(faces), level_count, 0u /* supercompression */})
     out.put(field);
   const size_t index_at = out.size();
   out.put_bytes(std::array<uint8_t, ktx2::kIndexEnd - ktx2::kHeaderEnd>{}.data(),
@@ -117,7 +159,7 @@ std::vector<uint8_t> write(std::span<const Image> levels, int faces, PixelPrecis
                 level_count * ktx2::kLevelIndexEntryBytes);
 
   const uint32_t dfd_at = uint32_t(out.size());
-  for (const uint32_t word : ktx2::data_format_descriptor(precision)) out.put(word);
+  for (const uint32_t word : format.descriptor) out.put(word);
   const uint32_t kvd_at = uint32_t(out.size());
   put_key_values(out, all_metadata(metadata));
   const uint32_t kvd_bytes = uint32_t(out.size()) - kvd_at;
@@ -127,9 +169,9 @@ std::vector<uint8_t> write(std::span<const Image> levels, int faces, PixelPrecis
   out.put_at(index_at + 12, kvd_bytes);  // sgdByteOffset and sgdByteLength stay 0
 
   for (size_t p = levels.size(); p-- > 0;) {
-    out.align(ktx2::level_alignment(precision));
+    out.align(format.alignment);
     const uint64_t at = out.size();
-    put_pixels(out, levels[p], precision);
+    format.put_level(out, levels[p]);
     const uint64_t length = out.size() - at;
     const size_t entry = level_index_at + p * ktx2::kLevelIndexEntryBytes;
     out.put_at(entry, at);
@@ -143,12 +185,19 @@ std::vector<uint8_t> write(std::span<const Image> levels, int faces, PixelPrecis
 
 std::vector<uint8_t> write_ktx2(std::span<const Image> levels, PixelPrecision precision,
                                 const std::map<std::string, std::string>& metadata) {
-  return write(levels, 1, precision, metadata);
+  return write(levels, 1, uncompressed(precision), metadata);
 }
 
 std::vector<uint8_t> write_ktx2_cube(std::span<const Image> levels, PixelPrecision precision,
                                      const std::map<std::string, std::string>& metadata) {
-  return write(levels, ktx2::kCubeFaces, precision, metadata);
+  return write(levels, ktx2::kCubeFaces, uncompressed(precision), metadata);
+}
+
+std::vector<uint8_t> write_ktx2_astc_cube(std::span<const Image> levels, const AstcOptions& options,
+                                          const std::map<std::string, std::string>& metadata) {
+  check_chain(levels, ktx2::kCubeFaces);  // before the compressor's setup
+  AstcHdrEncoder encoder(options);
+  return write(levels, ktx2::kCubeFaces, astc_cube(encoder), metadata);
 }
 
 }  // namespace lp
