@@ -23,17 +23,6 @@ size_t file_index(const PrefilterRequest& request, const std::string& name) {
   return size_t(it - names.begin());
 }
 
-// A strip of six N x N faces side by side (6N x N) as KTX2 lays out a cube map's level: the faces one
-// below the other (N x 6N).
-Image stacked_faces(const Image& strip) {
-  const int size = strip.height();
-  Image out(size, kCubeFaces * size);
-  for (int face = 0; face < kCubeFaces; ++face)
-    for (int j = 0; j < size; ++j)
-      std::copy_n(strip.row(j) + 3 * face * size, 3 * size, out.row(face * size + j));
-  return out;
-}
-
 std::vector<uint8_t> encode_ktx2(const PrefilteredChain& chain, const PrefilterRequest& request) {
   std::map<std::string, std::string> metadata;
   for (const auto& [key, text] : prefilter_conventions(request)) metadata["lightprobe." + key] = text;
@@ -45,6 +34,15 @@ std::vector<uint8_t> encode_ktx2(const PrefilteredChain& chain, const PrefilterR
 }
 
 }  // namespace
+
+Image stacked_faces(const Image& strip) {
+  const int size = strip.height();
+  Image out(size, kCubeFaces * size);
+  for (int face = 0; face < kCubeFaces; ++face)
+    for (int j = 0; j < size; ++j)
+      std::copy_n(strip.row(j) + 3 * face * size, 3 * size, out.row(face * size + j));
+  return out;
+}
 
 std::vector<std::string> prefilter_file_names(const PrefilterRequest& request) {
   if (request.format == PrefilterFormat::Ktx2) return {"prefiltered.ktx2"};

@@ -26,6 +26,10 @@ int64_t prefilter_file_bytes(const PrefilterRequest& request, const std::string&
 // any other text.
 int prefilter_level_index(const PrefilterRequest& request, const std::string& text);
 
+// A strip of six N x N faces side by side (6N x N) as KTX2 lays out a cube map's level: the faces one
+// below the other (N x 6N).
+Image stacked_faces(const Image& strip);
+
 std::vector<uint8_t> encode_prefilter_file(const PrefilteredChain& chain, const PrefilterRequest& request,
                                            const std::string& name);
 

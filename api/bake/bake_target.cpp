@@ -10,7 +10,7 @@ namespace lp::api {
 namespace {
 
 const std::vector<TargetSpec>& registry() {
-  static const std::vector<TargetSpec> specs = {};
+  static const std::vector<TargetSpec> specs = {unity_target(), unreal_target(), godot_target()};
   return specs;
 }
 

@@ -2,14 +2,9 @@
 // How the desktop engines' importers lay out an environment: their frames against our world (z-up,
 // right-handed), the columns of their lat-long panoramas and the faces of a left-handed engine's cube.
 // Each engine keeps the world's up as its own, so its panorama is ours with the columns reordered.
-#include <array>
-
 #include "engine/image/image.hpp"
 
 namespace lp::api {
-
-// engine = from_world * world, for directions (a rotation, or a mirror for a left-handed engine).
-using FrameMatrix = std::array<std::array<int, 3>, 3>;
 
 // A panorama whose column at u (pixel centre (x + 0.5) / W, row 0 the engine's up as in ours) shows our
 // map's column at u_ours, with u = sign * u_ours + offset (mod 1).
