@@ -10,6 +10,7 @@
 #include "engine/image/encode_memory.hpp"
 #include "engine/image/ktx2.hpp"
 #include "engine/projection/cube_face.hpp"
+#include "engine/projection/projection_exr.hpp"
 
 namespace lp::api {
 namespace {
@@ -97,7 +98,8 @@ std::vector<uint8_t> encode_prefilter_file(const PrefilteredChain& chain, const 
                                            const std::string& name) {
   const size_t index = file_index(request, name);
   if (request.format == PrefilterFormat::Exr)
-    return write_exr(chain.levels[index], ExrCompression::Zip, request.precision);
+    return write_exr_envmap(chain.levels[index], exr_envmap(request.params.projection), ExrCompression::Zip,
+                            request.precision);
   return encode_ktx2(chain, request);
 }
 

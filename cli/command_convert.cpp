@@ -10,6 +10,7 @@
 #include "cli/image_output.hpp"
 #include "cli/output.hpp"
 #include "engine/projection/cube_layout.hpp"
+#include "engine/projection/projection_exr.hpp"
 #include "engine/projection/reproject.hpp"
 
 namespace lp::cli {
@@ -64,7 +65,8 @@ void run(Arguments& args) {
       api::parse_projection_params(args.take_query({"projection", "size", "face"}));
   args.expect_all_taken("convert");
   const DecodedImage in = read_input_image(args.positional()[0]);
-  const auto bytes = write_image(reprojected(in.image, from, to), params.format, params.tone);
+  const ExrEnvmap envmap = to.face ? ExrEnvmap::None : exr_envmap(to.projection);  // a face is no map
+  const auto bytes = write_image_envmap(reprojected(in.image, from, to), params.format, params.tone, envmap);
   Output out(out_file);
   out.write(bytes);
   out.finish();

@@ -2,11 +2,13 @@
 // scanline or tiled, RGB(A) or Y channels.
 #include <Imath/half.h>
 #include <ImfChannelList.h>
+#include <ImfChromaticities.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
 #include <ImfThreading.h>
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <thread>
 
 #include "engine/image/exr_capacity.hpp"
+#include "engine/image/exr_standard_attributes.hpp"
 #include "engine/image/image_limits.hpp"
 
 namespace lp {
@@ -109,10 +112,28 @@ Image read_exr(std::span<const uint8_t> bytes, const ImageLimits& limits) {
   }
 }
 
+namespace {
+
+// OpenEXR's standard attributes (exr_standard_attributes.hpp). Imf::Chromaticities() is Rec. ITU-R
+// BT.709-3: the sRGB primaries and D65.
+void add_standard_attributes(Imf::Header& header, ExrEnvmap envmap) {
+  Imf::addChromaticities(header, Imf::Chromaticities());
+  if (envmap == ExrEnvmap::LatLong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);
+  if (envmap == ExrEnvmap::Cube) Imf::addEnvmap(header, Imf::ENVMAP_CUBE);
+}
+
+}  // namespace
+
 std::vector<uint8_t> write_exr(const Image& image, ExrCompression compression, PixelPrecision precision) {
+  return write_exr_envmap(image, ExrEnvmap::None, compression, precision);
+}
+
+std::vector<uint8_t> write_exr_envmap(const Image& image, ExrEnvmap envmap, ExrCompression compression,
+                                      PixelPrecision precision) {
   enable_exr_threads();
   Imf::Header header(image.width(), image.height());
   header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
+  add_standard_attributes(header, envmap);
   // An output file takes pixels of its channels' own type (it converts only when reading): half
   // channels are written from a copy of the pixels in half.
   const bool half = precision == PixelPrecision::Half;
@@ -141,6 +162,7 @@ std::vector<uint8_t> write_exr_channels(int width, int height, std::span<const E
   enable_exr_threads();
   Imf::Header header(width, height);
   header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
+  add_standard_attributes(header, ExrEnvmap::None);
   for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
   MemoryOStream stream;
   {

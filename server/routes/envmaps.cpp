@@ -9,6 +9,7 @@
 #include "engine/image/encode_memory.hpp"
 #include "engine/projection/cube_layout.hpp"
 #include "engine/projection/projection_cache.hpp"
+#include "engine/projection/projection_exr.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/maps/envmap_loading.hpp"
 #include "server/maps/stored_maps.hpp"
@@ -66,9 +67,10 @@ void create(App& app, const httplib::Request& req, httplib::Response& res) {
   send_json(res, metadata(*entry), 201);
 }
 
-void send_image(const Image& pixels, ImageFormat format, const ToneMap& tone, MemoryReservation memory,
-                httplib::Response& res) {
-  send_reserved(res, write_image(pixels, format, tone), format_mime_type(format), std::move(memory));
+void send_image(const Image& pixels, ImageFormat format, const ToneMap& tone, ExrEnvmap envmap,
+                MemoryReservation memory, httplib::Response& res) {
+  send_reserved(res, write_image_envmap(pixels, format, tone, envmap), format_mime_type(format),
+                std::move(memory));
 }
 
 // The map in another projection, cached on it; a cross or a single face is copied out of the cube's strip.
@@ -83,10 +85,12 @@ void send_projection(App& app, const EnvMap& map, const api::ProjectionParams& p
       MemoryUse::Transient,
       fmt::format("encoding a {} of the map as {}", enum_name(params.projection), enum_name(preview.format)));
   const auto strip_or_square = projection_cached(map, params.projection, size);
-  if (!copied) return send_image(*strip_or_square, preview.format, preview.tone, std::move(memory), res);
+  if (!copied)
+    return send_image(*strip_or_square, preview.format, preview.tone, exr_envmap(params.projection),
+                      std::move(memory), res);
   const Image image = params.face ? cube_strip_face(*strip_or_square, int(*params.face))
                                   : cube_relayout(*strip_or_square, Projection::Cube, Projection::Cross);
-  send_image(image, preview.format, preview.tone, std::move(memory), res);
+  send_image(image, preview.format, preview.tone, ExrEnvmap::None, std::move(memory), res);
 }
 
 void image(App& app, const httplib::Request& req, httplib::Response& res) {
@@ -99,7 +103,7 @@ void image(App& app, const httplib::Request& req, httplib::Response& res) {
   auto memory =
       app.memory.reserve(encode_bytes(preview.format, pixels.width(), pixels.height()), MemoryUse::Transient,
                          std::string("encoding a map as ") + enum_name(preview.format));
-  send_image(pixels, preview.format, preview.tone, std::move(memory), res);
+  send_image(pixels, preview.format, preview.tone, ExrEnvmap::LatLong, std::move(memory), res);
 }
 
 void distribution(App& app, const httplib::Request& req, httplib::Response& res) {

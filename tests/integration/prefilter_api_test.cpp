@@ -1,10 +1,11 @@
 // Prefiltered specular chains on the real server: a job from POST to done with its progress, the files
 // read back (KTX2, a KTX2 cube map, EXR in every projection) against analytic values, a long job
 // cancelled while it runs, a file asked of a job still queued, a chain reused for the same map content
-// and parameters (and not after a cancel or a removal), and bad input.
+// and parameters (and not after a cancel or a removal), a bake target's files, and bad input.
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -234,7 +235,9 @@ TEST(PrefilterApi, TheSameChainOfTheSameMapContentIsReusedNotMadeAgain) {
       R"({"levels":3,"base_size":16,"samples":64,"projection":"octahedral"})",
       R"({"levels":3,"base_size":16,"samples":48,"projection":"equal-area"})",
       R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","format":"exr"})",
-      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","precision":"float"})"};
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","precision":"float"})",
+      R"({"levels":3,"base_size":16,"samples":48,"projection":"octahedral","level_roughness":"filament"})",
+      R"({"base_size":16,"samples":48,"target":"gltf"})"};
   for (const std::string& other : others) {
     const Reply r = submit(white(), other);
     EXPECT_EQ(r.status, 202) << other;
@@ -310,6 +313,60 @@ TEST(PrefilterApi, UnknownMapsJobsAndFilesAre404) {
   EXPECT_EQ(no_file.status, 404);
   EXPECT_NE(no_file.body_json()["error"]["message"].get<std::string>().find("prefiltered.ktx2"),
             std::string::npos);
+}
+
+// A target's job: the target's chain (a cube of the full pyramid for gltf), then its files, listed and
+// served; a white map gives irradiance pi everywhere, E_00 = pi sqrt(4 pi) and no other coefficient.
+TEST(PrefilterApi, ATargetsJobServesTheTargetsFiles) {
+  const json st = finished(white(), R"({"base_size":16,"samples":48,"target":"gltf"})");
+  ASSERT_EQ(st["status"], "done") << st;
+  EXPECT_EQ(st["target"], "gltf");
+  EXPECT_FALSE(st.contains("format"));
+  EXPECT_EQ(st["projection"], "cube");
+  EXPECT_EQ(st["levels"], 5);
+  EXPECT_DOUBLE_EQ(st["level_info"][4]["roughness"].get<double>(), 1.0);
+  std::vector<std::string> names;
+  for (const json& f : st["files"]) names.push_back(f["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"prefilter_white.gltf", "prefilter_white_radiance.ktx2",
+                                             "manifest.json"}));
+  const Reply gltf = shared_get(st["files"][0]["url"]);
+  ASSERT_EQ(gltf.status, 200) << gltf.body;
+  EXPECT_EQ(gltf.type(), "model/gltf+json");
+  const json c =
+      gltf.body_json()["extensions"]["KHR_lights_environment"]["lights"][0]["irradianceCoefficients"];
+  ASSERT_EQ(c.size(), 9u);
+  const double e00 = M_PI * std::sqrt(4 * M_PI);
+  for (size_t j = 0; j < 9; ++j)
+    for (size_t ch = 0; ch < 3; ++ch) EXPECT_NEAR(c[j][ch].get<double>(), j == 0 ? e00 : 0.0, 1e-9) << j;
+  const Reply cube = shared_get(st["files"][1]["url"]);
+  ASSERT_EQ(cube.status, 200);
+  const Ktx2Texture t = read_ktx2(bytes_of(cube), {});
+  EXPECT_EQ(t.faces, 6u);
+  ASSERT_EQ(t.levels.size(), 5u);
+  for (const Image& level : t.levels) expect_all_near(level, 1.0f, 2e-3f);
+  const Reply manifest = shared_get(st["files"][2]["url"]);
+  ASSERT_EQ(manifest.status, 200);
+  EXPECT_EQ(manifest.body_json()["target"], "gltf");
+  EXPECT_EQ(shared_get(st["files"][0]["url"].get<std::string>() + "x").status, 404);
+}
+
+TEST(PrefilterApi, AFieldATargetFixesIsA400NamingIt) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"target":"gltf","projection":"latlong"})", "field 'projection'"},
+      {R"({"target":"gltf","levels":4})", "field 'levels'"},
+      {R"({"target":"gltf","level_roughness":"filament"})", "field 'level_roughness'"},
+      {R"({"target":"gltf","format":"exr"})", "field 'format'"},
+      {R"({"target":"gltf","precision":"float"})", "field 'precision'"},
+      {R"({"target":"gltf","base_size":48})", "field 'base_size'"},
+      {R"({"target":"unity3d"})", "field 'target'"}};
+  for (const auto& [body, field] : cases) {
+    const Reply r = submit(white(), body);
+    EXPECT_EQ(r.status, 400) << body;
+    EXPECT_NE(r.body.find(field), std::string::npos) << r.body;
+  }
+  // The value the target makes may be given.
+  const Reply same = submit(white(), R"({"target":"gltf","base_size":16,"levels":5,"projection":"cube"})");
+  EXPECT_TRUE(same.status == 200 || same.status == 202) << same.body;
 }
 
 }  // namespace
