@@ -12,9 +12,9 @@ Json frame_json(const EngineFrame& frame) {
   return {{"text", frame.text}, {"world_to_engine", frame.world_to_engine}, {"sources", frame.sources}};
 }
 
-BakeFile exr_file(const std::string& name, const Image& image, const BakeInput& input) {
+BakeFile exr_file(const std::string& name, const Image& image, ExrEnvmap envmap, const BakeInput& input) {
   return {name, format_mime_type(ImageFormat::Exr),
-          write_exr(image, ExrCompression::Zip, input.request.precision)};
+          write_exr_envmap(image, envmap, ExrCompression::Zip, input.request.precision)};
 }
 
 BakeFile hdr_file(const std::string& name, const Image& image) {

@@ -7,6 +7,7 @@
 #include "api/bake/bake_manifest.hpp"
 #include "api/bake/bake_target.hpp"
 #include "api/bake/engine_layouts.hpp"
+#include "engine/image/exr_standard_attributes.hpp"
 #include "engine/image/image_io.hpp"
 
 namespace lp::api {
@@ -24,8 +25,9 @@ struct EngineFrame {
 };
 Json frame_json(const EngineFrame& frame);
 
-// `image` (a lat-long panorama, or a cube's faces side by side) as an EXR of the request's precision.
-BakeFile exr_file(const std::string& name, const Image& image, const BakeInput& input);
+// `image` as an EXR of the request's precision with OpenEXR's `chromaticities` and `envmap` (LatLong for
+// a panorama; None for a strip of cube faces, a layout OpenEXR does not define).
+BakeFile exr_file(const std::string& name, const Image& image, ExrEnvmap envmap, const BakeInput& input);
 BakeFile hdr_file(const std::string& name, const Image& image);
 // The chain's cube levels (strips of faces in the cube frame of cube_face.hpp) as an ASTC 4x4 HDR KTX2
 // cube, each level's faces x-mirrored first for a left-handed engine (cube_strip_x_mirrored).

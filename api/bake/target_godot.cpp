@@ -56,9 +56,9 @@ Json import_json(const std::string& panorama, const std::string& cubemap, const 
 
 std::vector<BakeFile> write(const BakeInput& input) {
   std::vector<BakeFile> files;
-  files.push_back(
-      exr_file(input.name + "_panorama.exr", panorama_columns(input.map.image(), kPanorama), input));
-  files.push_back(exr_file(input.name + "_cubemap.exr", input.chain->levels[0], input));
+  files.push_back(exr_file(input.name + "_panorama.exr", panorama_columns(input.map.image(), kPanorama),
+                           ExrEnvmap::LatLong, input));
+  files.push_back(exr_file(input.name + "_cubemap.exr", input.chain->levels[0], ExrEnvmap::None, input));
   files.push_back(astc_cube_file(input.name + "_radiance_astc.ktx2", input, false));
 
   add_manifest(

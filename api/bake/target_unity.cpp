@@ -60,8 +60,8 @@ Json import_json(const std::string& latlong, const std::string& ktx2) {
 
 std::vector<BakeFile> write(const BakeInput& input) {
   std::vector<BakeFile> files;
-  files.push_back(
-      exr_file(input.name + "_latlong.exr", panorama_columns(input.map.image(), kPanorama), input));
+  files.push_back(exr_file(input.name + "_latlong.exr", panorama_columns(input.map.image(), kPanorama),
+                           ExrEnvmap::LatLong, input));
   files.push_back(astc_cube_file(input.name + "_radiance_astc.ktx2", input, true));
 
   add_manifest(

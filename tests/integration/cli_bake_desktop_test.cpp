@@ -4,6 +4,9 @@
 // the colour of the world direction the engine samples there, as the engine's own source maps texels to
 // directions and through the frame the manifest states; sizes, and the manifest's frame, files and
 // import settings.
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfStandardAttributes.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,6 +69,20 @@ void expect_files_listed(const fs::path& out, const json& manifest) {
 void expect_frame(const json& manifest, const std::vector<std::vector<double>>& world_to_engine) {
   EXPECT_EQ(manifest["frame"]["world_to_engine"], json(world_to_engine));
   EXPECT_FALSE(manifest["frame"]["sources"].get<std::string>().empty());
+}
+
+// OpenEXR's `envmap` of a file ("none" without one), after checking its `chromaticities` are Rec.709's.
+std::string envmap_attribute(const fs::path& exr) {
+  Imf::InputFile file(exr.string().c_str());
+  EXPECT_TRUE(Imf::hasChromaticities(file.header())) << exr;
+  if (Imf::hasChromaticities(file.header())) {
+    const Imf::Chromaticities c = Imf::chromaticities(file.header());
+    EXPECT_NEAR(c.red.x, 0.64f, 1e-4f);
+    EXPECT_NEAR(c.green.y, 0.60f, 1e-4f);
+    EXPECT_NEAR(c.white.x, 0.3127f, 1e-4f);
+  }
+  if (!Imf::hasEnvmap(file.header())) return "none";
+  return Imf::envmap(file.header()) == Imf::ENVMAP_LATLONG ? "latlong" : "cube";
 }
 
 // A KTX2 ASTC cube: its header fields and each level's faces decoded.
@@ -135,6 +152,9 @@ TEST(CliBakeDesktop, GodotPanoramaCubemapAndAstcCubeAreTheMapInGodotsFrame) {
   EXPECT_NEAR(pano.at(0, 0).z, 2.5f, 0.01f);               // Godot's up, row 0: the sky
   EXPECT_NEAR(pano.at(0, kMapHeight / 2).y, 2.5f, 0.02f);  // Godot's forward -Z, u = 0: the world's +y
 
+  EXPECT_EQ(envmap_attribute(out / "dirs_panorama.exr"), "latlong");
+  EXPECT_EQ(envmap_attribute(out / "dirs_cubemap.exr"), "none");  // a 6x1 strip is no OpenEXR cube
+
   const Image cube = read_image_file(out / "dirs_cubemap.exr").image;
   ASSERT_EQ(cube.width(), 6 * kFace);
   ASSERT_EQ(cube.height(), kFace);
@@ -170,6 +190,8 @@ TEST(CliBakeDesktop, UnityLatLongAndAstcCubeAreTheMapInUnitysLeftHandedFrame) {
   ASSERT_EQ(latlong.width(), kMapWidth);
   EXPECT_EQ(test::texels_off_direction(latlong, test::unity_panorama_texel, kHalfTolerance), 0);
   EXPECT_NEAR(latlong.at(kMapWidth / 4, kMapHeight / 2).y, 0.5f, 0.02f);  // Unity's forward +Z: world -y
+
+  EXPECT_EQ(envmap_attribute(out / "dirs_latlong.exr"), "latlong");
 
   const AstcCube astc = read_astc_cube(out / "dirs_radiance_astc.ktx2");
   EXPECT_EQ(astc.vk_format, 1000066000u);
