@@ -65,7 +65,7 @@ Json three_manifest(const BakeInput& input, const std::string& hdr, const std::s
         {"precision",
          "three.js r187's loader applies the gain to sRGB-encoded values with a weight 0.5 log2 1.8 that "
          "approximates the specification's linear gain: exact where the gain is 0 (radiance within [0, 1]), "
-         "within a few percent above (see tests/engines/three.test.mjs)"}}});
+         "within about 5% above; it stores half floats, so radiance over 65504 is clipped there"}}});
   m["import"] = {
       {"three_revision", "r187"},
       {"code",
