@@ -83,7 +83,7 @@ test('three target: HDR and Ultra HDR maps light spheres in three.js as the prod
   for (const page of readdirSync(path.join(here, 'pages/three'))) copyFileSync(path.join(here, 'pages/three', page), path.join(site, page));
 
   const files = await serveFiles(site);
-  const browser = await openBrowser({ width: SIZE, height: SIZE });
+  const browser = await openBrowser({ width: SIZE * ROUGHNESSES.length, height: SIZE });
   try {
     const { page } = browser;
     await page.goto(`${files.base}/index.html`);

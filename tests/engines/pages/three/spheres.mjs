@@ -46,9 +46,17 @@ window.renderSpheres = async ({ map, roughnesses, size }) => {
     renderer.readRenderTargetPixels(target, 0, 0, size, size, pixels);
     out.push(Array.from(pixels));
   }
+  // The picture people look at: the spheres side by side, sRGB encoded.
   renderer.setRenderTarget(null);
-  renderer.outputColorSpace = THREE.SRGBColorSpace;  // the picture people look at
-  renderer.render(scene(envMap, roughnesses[0]), camera);
+  renderer.setSize(size * roughnesses.length, size, false);
+  renderer.outputColorSpace = THREE.SRGBColorSpace;
+  renderer.setScissorTest(true);
+  roughnesses.forEach((roughness, i) => {
+    renderer.setViewport(i * size, 0, size, size);
+    renderer.setScissor(i * size, 0, size, size);
+    renderer.render(scene(envMap, roughness), camera);
+  });
+  renderer.setScissorTest(false);
   renderer.outputColorSpace = THREE.LinearSRGBColorSpace;
   pmrem.dispose();
   return out;
