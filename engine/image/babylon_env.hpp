@@ -5,7 +5,8 @@
 // polynomial, babylon_polynomial.hpp) and `specular`: `mipmaps`, the {position, length} of each image
 // from the end of the manifest, for every level of the full chain (log2(width) + 1 of them, down to 1x1)
 // and, within a level, the faces +X, -X, +Y, -Y, +Z, -Z; and `lodGenerationScale`. Babylon reads the
-// faces as RGBD (rgbd.hpp), row 0 the first row of the face's texture (t = 0).
+// faces as RGBD (rgbd.hpp) and uploads each image bottom row first: image row 0 is the face's last row
+// (t = 1 of OpenGL's cube map table).
 #include <cstdint>
 #include <optional>
 #include <span>

@@ -41,7 +41,7 @@ Image babylon_face(const Image& strip, int face) {
   const int size = source.width();
   Image out(size, size);
   for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) out.set(x, y, source.at(size - 1 - x, y));
+    for (int x = 0; x < size; ++x) out.set(x, y, source.at(size - 1 - x, size - 1 - y));
   return out;
 }
 

@@ -8,7 +8,8 @@
 // (-x, z, -y), so a model and the map keep in Babylon the places they have in our renders. Babylon
 // samples a cube as OpenGL does with the direction in its world frame, so its face texel in direction d
 // holds our cube (glTF frame) in direction (-d.x, d.y, d.z): its +X and -X faces are our -X and +X, and
-// every face is ours mirrored left to right.
+// every face is ours mirrored left to right. Babylon uploads a face's image bottom row first
+// (babylon_env.hpp), so each image is also upside down: a face image is ours turned by 180 degrees.
 #include <cstdint>
 #include <vector>
 
@@ -20,7 +21,8 @@ namespace lp {
 // World z-up directions to Babylon's frame (row i gives component i).
 inline constexpr Matrix3 kWorldToBabylon = {{{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}}};
 
-// One face of a Babylon cube (its order +X, -X, +Y, -Y, +Z, -Z) from one level of our cube strip.
+// The image of one face of a Babylon cube (its order +X, -X, +Y, -Y, +Z, -Z) from one level of our
+// cube strip.
 Image babylon_face(const Image& strip, int face);
 
 // The .env of a cube chain whose base size is a power of two: RGBD PNG faces, the chain's levels and,

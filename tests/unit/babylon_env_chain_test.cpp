@@ -1,6 +1,6 @@
 // A cube chain as Babylon's .env: Babylon's cube in direction d holds ours in direction (-d.x, d.y, d.z)
-// (the frame of babylon_env_chain.hpp), every level of the full chain is in the file as RGBD PNG, the
-// levels past the chain's are box averages, and the polynomial is there.
+// (the frame of babylon_env_chain.hpp; its images bottom row first), every level of the full chain is in the
+// file as RGBD PNG, the levels past the chain's are box averages, and the polynomial is there.
 #include "engine/image/babylon_env_chain.hpp"
 
 #include <gtest/gtest.h>
@@ -39,7 +39,8 @@ Rgb texel_at(const Image& strip_or_face, int face, Vec3d d, bool strip) {
   EXPECT_EQ(p.face, face);
   const int n = strip_or_face.height();
   const int i = std::min(n - 1, int((p.ab.x + 1) / 2 * n)), j = std::min(n - 1, int((p.ab.y + 1) / 2 * n));
-  return strip_or_face.at((strip ? p.face * n : 0) + i, j);
+  // A Babylon image holds row j of the face at row n - 1 - j.
+  return strip_or_face.at((strip ? p.face * n : 0) + i, strip ? j : n - 1 - j);
 }
 
 TEST(BabylonEnvChain, BabylonsCubeInDirectionDHoldsOursMirroredInX) {
@@ -79,7 +80,7 @@ TEST(BabylonEnvChain, WritesEveryLevelDownToOneTexel) {
       const Image face = decode_png_rgbd(env.specular[size_t(level * 6 + f)]);
       ASSERT_EQ(face.width(), 8 >> level);
       // Our face for Babylon's face f, its texels' mean: x = ours + 1; y the mean column of level
-      // min(level, 1) + 1, mirrored or not; z the mean row + 1.
+      // min(level, 1) + 1, mirrored or not; z the mean row + 1, upside down or not.
       const float ours = float(f == 0 ? 1 : f == 1 ? 0 : f) + 1;
       const int n = 8 >> std::min(level, 1);
       const float mean_y = float(n + 1) / 2 + 10 * float(std::min(level, 1)), mean_z = float(n + 1) / 2;
@@ -92,9 +93,10 @@ TEST(BabylonEnvChain, WritesEveryLevelDownToOneTexel) {
       EXPECT_NEAR(mean.y, mean_y, 0.11) << level << " " << f;
       EXPECT_NEAR(mean.z, mean_z, 0.11) << level << " " << f;
     }
-  // Level 0's first texel of Babylon's +X is our -X's last column, first row.
+  // Level 0's first texel of Babylon's +X is our -X's last column, last row.
   const Rgb first = decode_png_rgbd(env.specular[0]).at(0, 0);
   EXPECT_NEAR(first.y, 8, 0.05);
+  EXPECT_NEAR(first.z, 8, 0.05);
 }
 
 TEST(BabylonEnvChain, RefusesOtherProjectionsAndSizes) {
