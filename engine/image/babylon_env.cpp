@@ -58,6 +58,13 @@ json manifest(const BabylonEnv& env) {
   return m;
 }
 
+// A count or offset of the manifest: a JSON integer at least 0 (a float is not converted).
+uint64_t whole_number(const json& v) {
+  if (!v.is_number_unsigned())
+    throw Error(ErrorKind::Corrupt, ".env: expected a whole number, got " + v.dump());
+  return v.get<uint64_t>();
+}
+
 // The images the manifest places in `payload` (the bytes after its NUL).
 std::vector<std::vector<uint8_t>> read_images(const json& mipmaps, size_t count,
                                               std::span<const uint8_t> payload) {
@@ -65,7 +72,7 @@ std::vector<std::vector<uint8_t>> read_images(const json& mipmaps, size_t count,
     throw Error(ErrorKind::Corrupt, ".env: expected " + std::to_string(count) + " specular images");
   std::vector<std::vector<uint8_t>> images;
   for (const json& m : mipmaps) {
-    const uint64_t position = m.at("position").get<uint64_t>(), length = m.at("length").get<uint64_t>();
+    const uint64_t position = whole_number(m.at("position")), length = whole_number(m.at("length"));
     if (position > payload.size() || length > payload.size() - position)
       throw Error(ErrorKind::Corrupt, ".env: an image lies past the end of the file");
     images.emplace_back(payload.begin() + ptrdiff_t(position),
@@ -110,11 +117,11 @@ BabylonEnv read_babylon_env(std::span<const uint8_t> bytes) {
   if (nul == bytes.end()) throw Error(ErrorKind::Corrupt, ".env: the manifest has no end");
   try {
     const json m = json::parse(text_begin, nul);
-    if (m.at("version").get<int>() != kBabylonEnvVersion)
+    if (whole_number(m.at("version")) != uint64_t(kBabylonEnvVersion))
       throw Error(ErrorKind::Corrupt, ".env: only version 2 is read");
-    const int64_t width = m.at("width").get<int64_t>();
-    if (!valid_width(width)) throw Error(ErrorKind::Corrupt, ".env: width is not a power of two");
-    if (width > kBabylonEnvMaxWidth) throw Error(ErrorKind::TooLarge, ".env: width over the limit");
+    const uint64_t width = whole_number(m.at("width"));
+    if (width > uint64_t(kBabylonEnvMaxWidth)) throw Error(ErrorKind::TooLarge, ".env: width over the limit");
+    if (!valid_width(int64_t(width))) throw Error(ErrorKind::Corrupt, ".env: width is not a power of two");
     BabylonEnv env;
     env.width = int(width);
     env.image_type = m.at("imageType").get<std::string>();

@@ -99,6 +99,15 @@ TEST(BabylonEnv, RefusesBrokenFiles) {
   ASSERT_NE(at, other_version.end());
   at[10] = '3';
   EXPECT_EQ(kind(other_version), ErrorKind::Corrupt);
+  // Offsets, sizes and versions are whole numbers: 1e300 is refused, not converted.
+  std::vector<uint8_t> huge = bytes;
+  const std::string position = "\"position\":0";
+  const auto p = std::search(huge.begin(), huge.end(), position.begin(), position.end());
+  ASSERT_NE(p, huge.end());
+  const std::string replaced = "\"position\":1e300";
+  huge.erase(p, p + ptrdiff_t(position.size()));
+  huge.insert(p, replaced.begin(), replaced.end());
+  EXPECT_EQ(kind(huge), ErrorKind::Corrupt);
 }
 
 TEST(BabylonEnv, ReadsTheFuzzSeeds) {
