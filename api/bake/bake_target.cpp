@@ -11,6 +11,7 @@ namespace {
 
 const std::vector<TargetSpec>& registry() {
   static const std::vector<TargetSpec> specs = {
+      babylon_target(),
       three_target(),
   };
   return specs;
