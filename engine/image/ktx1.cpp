@@ -41,16 +41,16 @@ void put_string(std::vector<uint8_t>& out, const std::string& s) {
 
 void check_cube_chain(std::span<const Image> levels) {
   if (levels.empty() || levels[0].empty()) throw Error(ErrorKind::InvalidArgument, "KTX1: no base level");
-  const int size = levels[0].width();
+  const int size = levels[0].height();
   const size_t most = size_t(std::bit_width(unsigned(size)));
   if (levels.size() > most)
     throw Error(ErrorKind::InvalidArgument,
                 fmt::format("KTX1: {} levels, a cube of {} has at most {}", levels.size(), size, most));
   for (size_t p = 0; p < levels.size(); ++p) {
     const int n = std::max(1, size >> p);
-    if (levels[p].width() != n || levels[p].height() != ktx1::kCubeFaces * n)
+    if (levels[p].width() != ktx1::kCubeFaces * n || levels[p].height() != n)
       throw Error(ErrorKind::InvalidArgument,
-                  fmt::format("KTX1: level {} is {}x{}, not six faces of {} stacked", p, levels[p].width(),
+                  fmt::format("KTX1: level {} is {}x{}, not a strip of six faces of {}", p, levels[p].width(),
                               levels[p].height(), n));
   }
 }
@@ -75,7 +75,7 @@ std::vector<uint8_t> write_ktx1_cube(std::span<const Image> levels,
   check_cube_chain(levels);
   const std::vector<uint8_t> kv = key_values(metadata);
   std::vector<uint8_t> out(kIdentifier.begin(), kIdentifier.end());
-  const uint32_t size = uint32_t(levels[0].width());
+  const uint32_t size = uint32_t(levels[0].height());
   for (const uint32_t field :
        {ktx1::kEndianness, ktx1::kGlR11fG11fB10f, 1u, ktx1::kGlRgb, ktx1::kGlR11fG11fB10f,
         ktx1::kGlR11fG11fB10f, size, size, 0u /* depth */, 0u /* array elements */,
@@ -83,10 +83,11 @@ std::vector<uint8_t> write_ktx1_cube(std::span<const Image> levels,
     put(out, field);
   out.insert(out.end(), kv.begin(), kv.end());
   for (const Image& level : levels) {
-    put(out, uint32_t(level.width()) * uint32_t(level.width()) * kTexelBytes);  // imageSize: one face
-    const auto data = level.data();
-    for (size_t i = 0; i < data.size(); i += 3)
-      put(out, pack_r11g11b10f({data[i], data[i + 1], data[i + 2]}));
+    const int n = level.height();
+    put(out, uint32_t(n) * uint32_t(n) * kTexelBytes);  // imageSize: one face
+    for (int face = 0; face < ktx1::kCubeFaces; ++face)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) put(out, pack_r11g11b10f(level.at(face * n + i, j)));
   }
   return out;
 }
@@ -145,20 +146,21 @@ void check_header(const Ktx1Header& h) {
     corrupt(fmt::format("{} levels for a {}x{} base", h.levels, h.width, h.height));
 }
 
-// A level: its faces one below the other, each face's texels unpacked.
+// A level: its faces side by side, each face's texels unpacked.
 Image read_level(Reader& in, uint32_t p, uint32_t width, uint32_t height, uint32_t faces) {
   const uint64_t face_bytes = uint64_t(width) * height * kTexelBytes;
   if (in.word("a level's imageSize") != face_bytes)
     corrupt(fmt::format("level {} does not hold {}x{} faces", p, width, height));
   const auto data = in.take(face_bytes * faces, "a level");
-  Image image(int(width), int(height * faces));
-  auto out = image.data();
-  for (size_t t = 0; t < out.size() / 3; ++t) {
-    uint32_t texel;
-    std::memcpy(&texel, data.data() + 4 * t, 4);
-    const Rgb c = unpack_r11g11b10f(texel);
-    out[3 * t] = c.x, out[3 * t + 1] = c.y, out[3 * t + 2] = c.z;
-  }
+  Image image(int(width * faces), int(height));
+  size_t at = 0;
+  for (uint32_t face = 0; face < faces; ++face)
+    for (uint32_t j = 0; j < height; ++j)
+      for (uint32_t i = 0; i < width; ++i, at += kTexelBytes) {
+        uint32_t texel;
+        std::memcpy(&texel, data.data() + at, 4);
+        image.set(int(face * width + i), int(j), unpack_r11g11b10f(texel));
+      }
   return image;
 }
 
@@ -172,7 +174,7 @@ Ktx1Texture read_ktx1(std::span<const uint8_t> bytes, const ImageLimits& limits)
   const uint32_t kv_bytes = in.word("the header");
   check_header(h);
   t.metadata = read_ktx_key_values(in.take(kv_bytes, "the key/value data"), "KTX1");
-  check_image_size(h.width, int64_t(h.height) * h.faces, limits);  // the levels after it take a third more
+  check_image_size(int64_t(h.width) * h.faces, h.height, limits);  // the levels after it take a third more
   for (uint32_t p = 0; p < h.levels; ++p)
     t.levels.push_back(read_level(in, p, std::max(1u, h.width >> p), std::max(1u, h.height >> p), h.faces));
   if (!in.done()) corrupt("bytes after the last level");

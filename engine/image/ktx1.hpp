@@ -30,12 +30,13 @@ struct Ktx1Header {
 
 struct Ktx1Texture {
   Ktx1Header header;
-  std::vector<Image> levels;  // level 0 first, each its faces stacked (N x 6N) in the file's order
+  std::vector<Image> levels;  // level 0 first, each its faces side by side (6N x N) in the file's order
   // The key/value data; a value that ends in NUL (a string) without it.
   std::map<std::string, std::string> metadata;
 };
 
-// A cube map: each level its six faces stacked (N x 6N), level p of size max(1, N >> p), at most
+// A cube map: each level a strip of its six faces side by side (6N x N, Projection::Cube's layout),
+// level p of faces max(1, N >> p), at most
 // floor(log2(N)) + 1 levels. The header is the one Filament's cmgen writes and Filament's Ktx1Reader
 // understands: glType and glInternalFormat GL_R11F_G11F_B10F (the reader maps only that glType to its
 // UINT_10F_11F_11F_REV pixels; the KTX specification would have GL_UNSIGNED_INT_10F_11F_11F_REV),

@@ -31,11 +31,11 @@ std::vector<Image> cube_chain(int size, int levels) {
   std::vector<Image> out;
   for (int p = 0; p < levels; ++p) {
     const int n = std::max(1, size >> p);
-    Image image(n, 6 * n);
+    Image image(6 * n, n);
     for (int f = 0; f < 6; ++f)
       for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x)
-          image.set(x, f * n + y, {float(f + 1) / 4, float(p + 1) / 4, float(x + 2 * y) / 4});
+          image.set(f * n + x, y, {float(f + 1) / 4, float(p + 1) / 4, float(x + 2 * y) / 4});
     out.push_back(std::move(image));
   }
   return out;
@@ -95,15 +95,15 @@ TEST(Ktx1, ReadsCmgensSkyboxFaceByFace) {
   EXPECT_EQ(t.header.gl_type, ktx1::kGlR11fG11fB10f);
   EXPECT_EQ(t.header.gl_format, ktx1::kGlRgb);
   ASSERT_EQ(t.levels.size(), 1u);
-  ASSERT_EQ(t.levels[0].width(), 16);
-  ASSERT_EQ(t.levels[0].height(), 96);
+  ASSERT_EQ(t.levels[0].width(), 96);
+  ASSERT_EQ(t.levels[0].height(), 16);
   EXPECT_TRUE(t.metadata.empty());
   const Rgb colours[6] = {{1, 1, 1}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 1, 0}, {1, 0, 1}};
   for (int f = 0; f < 6; ++f)
     for (int y = 0; y < 16; ++y)
       for (int x = 0; x < 16; ++x) {
         const Rgb want = ((x / 8) ^ (y / 8)) & 1 ? colours[f] * 5.0f : Rgb{};
-        const Rgb got = t.levels[0].at(x, f * 16 + y);
+        const Rgb got = t.levels[0].at(f * 16 + x, y);
         ASSERT_EQ(got.x, want.x) << f << " " << x << " " << y;
         ASSERT_EQ(got.y, want.y);
         ASSERT_EQ(got.z, want.z);
@@ -114,8 +114,8 @@ TEST(Ktx1, ReadsCmgensIblWithItsShMetadata) {
   const Ktx1Texture t =
       read_ktx1(test::read_bytes(test::fuzz_corpus_path("ktx1", "cmgen_uv2_16_ibl.ktx")), {});
   ASSERT_EQ(t.levels.size(), 5u);  // 16 to 1
-  EXPECT_EQ(t.levels[4].width(), 1);
-  EXPECT_EQ(t.levels[4].height(), 6);
+  EXPECT_EQ(t.levels[4].width(), 6);
+  EXPECT_EQ(t.levels[4].height(), 1);
   const std::string& sh = t.metadata.at("sh");
   EXPECT_EQ(std::count(sh.begin(), sh.end(), '\n'), 9);
   EXPECT_TRUE(sh.starts_with("1.66667 1.25 1.25\n"));
@@ -125,7 +125,7 @@ TEST(Ktx1, WriterRefusesWhatIsNotACubeChain) {
   EXPECT_THROW(write_ktx1_cube({}), Error);
   EXPECT_THROW(write_ktx1_cube(std::vector<Image>{Image(8, 8)}), Error);  // not six faces
   auto levels = cube_chain(8, 2);
-  levels[1] = Image(4, 4);
+  levels[1] = Image(4, 4);  // a face, not a strip
   EXPECT_THROW(write_ktx1_cube(levels), Error);
   EXPECT_THROW(write_ktx1_cube(cube_chain(8, 5)), Error);  // 8 has 4 levels
   EXPECT_THROW(write_ktx1_cube(cube_chain(4, 1), {{"", "x"}}), Error);
