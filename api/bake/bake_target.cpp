@@ -10,7 +10,9 @@ namespace lp::api {
 namespace {
 
 const std::vector<TargetSpec>& registry() {
-  static const std::vector<TargetSpec> specs = {};
+  static const std::vector<TargetSpec> specs = {
+      filament_target(),
+  };
   return specs;
 }
 
