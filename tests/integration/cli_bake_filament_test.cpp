@@ -231,3 +231,39 @@ TEST_F(CliBakeFilament, ShIsCmgensInOurFrame) {
 
 }  // namespace
 }  // namespace lp
+
+namespace lp {
+namespace {
+
+TEST_F(CliBakeFilament, ManifestStatesFrameFacesScheduleAndFiles) {
+  const json& m = bakes().manifest;
+  EXPECT_EQ(m["target"], "filament");
+  EXPECT_EQ(m["frame"]["world_to_engine"], json::parse("[[1,0,0],[0,0,1],[0,-1,0]]"));
+  EXPECT_EQ(m["face_order"]["faces"], json::parse(R"(["px","nx","py","ny","pz","nz"])"));
+  ASSERT_EQ(m["roughness_to_lod"]["levels"], 5);
+  for (int i = 0; i < 5; ++i)  // lod = 4 r (2 - r) = i
+    EXPECT_NEAR(m["roughness_to_lod"]["roughness"][size_t(i)].get<double>(), 1 - std::sqrt(1 - i / 4.0),
+                1e-12);
+  EXPECT_EQ(m["files"][0]["name"], "sunrise_ibl.ktx");
+  EXPECT_EQ(m["files"][1]["name"], "sunrise_skybox.ktx");
+  EXPECT_GT(m["import"]["sh"]["window_cutoff"].get<double>(), 3);
+}
+
+TEST(CliBakeFilamentRefusals, BaseSizeIsAPowerOfTwoAndTheChainIsTheTargets) {
+  const test::TempDir dir;
+  const std::string map = test::envmap_path("forest.exr").string();
+  const auto out = (dir.path() / "out").string();
+  const test::CliRun size =
+      test::run_cli({"bake", map, "--target", "filament", "--out", out, "--base-size", "96"});
+  EXPECT_EQ(size.exit_status, 2);
+  EXPECT_NE(size.err.find("base_size"), std::string::npos) << size.err;
+  EXPECT_NE(size.err.find("power of two"), std::string::npos) << size.err;
+  const test::CliRun projection =
+      test::run_cli({"bake", map, "--target", "filament", "--out", out, "--projection", "latlong"});
+  EXPECT_EQ(projection.exit_status, 2);
+  EXPECT_NE(projection.err.find("projection"), std::string::npos) << projection.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "forest_ibl.ktx"));
+}
+
+}  // namespace
+}  // namespace lp
