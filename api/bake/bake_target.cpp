@@ -1,6 +1,7 @@
 #include "api/bake/bake_target.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 #include "api/api_error.hpp"
 #include "api/bake/targets.hpp"
@@ -11,6 +12,8 @@ namespace {
 
 const std::vector<TargetSpec>& registry() {
   static const std::vector<TargetSpec> specs = {
+      gltf_target(),
+      filament_target(),
       babylon_target(),
       three_target(),
   };
@@ -39,6 +42,14 @@ std::string available_target_names() {
   std::vector<std::string> names;
   for (BakeTarget t : available_targets()) names.emplace_back(enum_name(t));
   return names.empty() ? std::string("none") : join(names, ", ");
+}
+
+std::string bake_file_stem(const std::string& name) {
+  std::string stem = name.empty() ? std::string("map") : name;
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  if (stem.front() == '.') stem.front() = '_';
+  return stem;
 }
 
 int64_t bake_files_bytes(const std::vector<BakeFile>& files) {

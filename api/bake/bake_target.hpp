@@ -66,6 +66,9 @@ std::vector<BakeTarget> available_targets();
 // "gltf, filament, ...": the available targets' names, for messages and help.
 std::string available_target_names();
 
+// `name` as the stem of a file name: letters, digits, '-', '_' and '.' kept, anything else '_'.
+std::string bake_file_stem(const std::string& name);
+
 // The total size of a target's files (what a job keeps of them in memory).
 int64_t bake_files_bytes(const std::vector<BakeFile>& files);
 
