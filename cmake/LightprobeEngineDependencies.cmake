@@ -5,7 +5,8 @@
 # Each entry: the target the engine links | the package | its version, if one is required.
 set(LIGHTPROBE_ENGINE_DEPENDENCIES "Threads::Threads|Threads" "TBB::tbb|TBB" "embree|embree|3"
     "OpenEXR::OpenEXR|OpenEXR" "Imath::Imath|Imath" "tinyobjloader::tinyobjloader|tinyobjloader" "fmt::fmt|fmt"
-    "nlohmann_json::nlohmann_json|nlohmann_json" "DNNL::dnnl|dnnl" "astcenc::astcenc|astcenc")
+    "nlohmann_json::nlohmann_json|nlohmann_json" "DNNL::dnnl|dnnl" "JPEG::JPEG|JPEG"
+    "astcenc::astcenc|astcenc")
 
 macro(lightprobe_find_engine_dependencies find_command)
   foreach(_lightprobe_entry IN LISTS LIGHTPROBE_ENGINE_DEPENDENCIES)
