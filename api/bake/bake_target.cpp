@@ -13,6 +13,9 @@ namespace {
 const std::vector<TargetSpec>& registry() {
   static const std::vector<TargetSpec> specs = {
       gltf_target(),
+      filament_target(),
+      babylon_target(),
+      three_target(),
   };
   return specs;
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/core/validate.hpp"
+#include "engine/image/babylon_env.hpp"
 
 namespace lp {
 
@@ -25,20 +26,14 @@ void PrefilterParams::validate(const std::string& prefix) const {
                       levels, base_size));
 }
 
-namespace {
-
-// Babylon's HDRFiltering lodGenerationScale: level i is filtered at alpha = 2^(i / scale) / base_size.
-constexpr double kBabylonLodGenerationScale = 0.8;
-
-}  // namespace
-
 const char* level_roughness_formula(LevelRoughness schedule) {
   switch (schedule) {
     case LevelRoughness::Filament:
       return "level i of n has roughness 1 - sqrt(1 - i / (n - 1)), Filament's lod = (n - 1) r (2 - r)";
     case LevelRoughness::Babylon:
       return "level i of n has GGX alpha = 2^(i / 0.8) / base_size (Babylon's lodGenerationScale 0.8), "
-             "roughness min(1, sqrt(alpha)), level 0 roughness 0";
+             "roughness sqrt(alpha) (above 1 where alpha is, as HDRFiltering filters them), level 0 "
+             "roughness 0";
     case LevelRoughness::Linear:
       break;
   }
@@ -52,7 +47,8 @@ double PrefilterParams::roughness(int level) const {
     case LevelRoughness::Filament:
       return 1 - std::sqrt(std::max(0.0, 1 - t));
     case LevelRoughness::Babylon:
-      return std::min(1.0, std::sqrt(std::exp2(level / kBabylonLodGenerationScale) / base_size));
+      // Babylon's HDRFiltering: alpha = 2^(i / lodGenerationScale) / size, not clamped.
+      return std::sqrt(std::exp2(level / kBabylonLodGenerationScale) / base_size);
     case LevelRoughness::Linear:
       break;
   }

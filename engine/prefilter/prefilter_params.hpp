@@ -33,7 +33,8 @@ struct PrefilterParams {
   // one before.
   void validate(const std::string& prefix = "") const;
 
-  // The perceptual roughness of level `level` under level_roughness (0 for level 0, in [0, 1]).
+  // The perceptual roughness of level `level` under level_roughness (0 for level 0, in [0, 1]; above 1
+  // for the levels Babylon filters at alpha above 1).
   double roughness(int level) const;
   bool operator==(const PrefilterParams&) const = default;
 };

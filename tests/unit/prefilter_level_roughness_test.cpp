@@ -44,9 +44,9 @@ TEST(PrefilterLevelRoughness, BabylonDoublesAlphaEvery0Point8Levels) {
   EXPECT_NEAR(p.roughness(1), 0.0963882, 1e-7);
   for (int i = 1; i < 8; ++i) {
     const double alpha = std::exp2(i / 0.8) / 256;
-    EXPECT_NEAR(p.roughness(i), std::min(1.0, std::sqrt(alpha)), 1e-15) << i;
+    EXPECT_NEAR(p.roughness(i), std::sqrt(alpha), 1e-15) << i;
   }
-  EXPECT_DOUBLE_EQ(p.roughness(7), 1);  // 2^8.75 / 256 > 1: clamped
+  EXPECT_NEAR(p.roughness(7), std::sqrt(std::exp2(8.75) / 256), 1e-15);  // alpha 1.68, as HDRFiltering has it
 }
 
 TEST(PrefilterLevelRoughness, EverySchedulesNameAndFormulaIsStated) {
