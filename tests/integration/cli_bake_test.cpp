@@ -106,10 +106,10 @@ TEST(CliBake, FailsAsTheOtherCommandsFail) {
   const std::vector<std::tuple<std::vector<std::string>, int, std::string>> cases = {
       {{"bake", "default"},
        2,
-       "error: bad_request: usage: lightprobe bake MAP --out DIR [options] (see --help)\n"},
+       "error: bad_request: usage: lightprobe bake MAP --out DIR [--target NAME] [options] (see --help)\n"},
       {{"bake", "default", "--out", "x", "--levels", "20"},
        2,
-       "error: invalid_field: field 'levels': must be in [1, 11], got 20\n"},
+       "error: invalid_field: field 'levels': must be in [1, 12], got 20\n"},
       {{"bake", "default", "--out", "x", "--projection", "sphere"},
        2,
        "error: invalid_field: field 'projection'"},
