@@ -1,4 +1,4 @@
-// The `babylon` target: NAME.env, Babylon.js's prefiltered environment (engine/image/babylon_env_chain.hpp),
+// The `babylon` target: NAME.env, Babylon.js's prefiltered environment (api/bake/babylon_env_chain.hpp),
 // loaded with CubeTexture.CreateFromPrefilteredData as a scene's environmentTexture.
 #include <bit>
 #include <string>
@@ -8,7 +8,7 @@
 #include "api/bake/targets.hpp"
 #include "api/prefilter_request.hpp"
 #include "engine/image/babylon_env.hpp"
-#include "engine/image/babylon_env_chain.hpp"
+#include "api/bake/babylon_env_chain.hpp"
 #include "engine/prefilter/prefilter_chain.hpp"
 
 namespace lp::api {

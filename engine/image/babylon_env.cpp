@@ -19,7 +19,7 @@ bool valid_width(int64_t width) {
   return width > 0 && std::has_single_bit(uint64_t(width));
 }
 
-json triple(const ShRgb& v) {
+json triple(const BabylonSphericalPolynomial::Rgb& v) {
   return json::array({v[0], v[1], v[2]});
 }
 
@@ -29,7 +29,7 @@ json polynomial_json(const BabylonSphericalPolynomial& p) {
           {"yz", triple(p.yz)}, {"zx", triple(p.zx)}, {"xy", triple(p.xy)}};
 }
 
-ShRgb read_triple(const json& j, const char* key) {
+BabylonSphericalPolynomial::Rgb read_triple(const json& j, const char* key) {
   const json& v = j.at(key);
   if (!v.is_array() || v.size() != 3) throw Error(ErrorKind::Corrupt, std::string(".env: irradiance.") + key);
   return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};

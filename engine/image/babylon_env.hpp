@@ -2,20 +2,27 @@
 // Babylon.js's .env container, version 2 (its EnvironmentTextureTools): 8 magic bytes, a JSON manifest
 // ended by a NUL byte, then the encoded images. The manifest holds `version` 2, `width` (the face size
 // of level 0, a power of two), `imageType` (the images' MIME type), `irradiance` (the spherical
-// polynomial, babylon_polynomial.hpp) and `specular`: `mipmaps`, the {position, length} of each image
+// polynomial, below) and `specular`: `mipmaps`, the {position, length} of each image
 // from the end of the manifest, for every level of the full chain (log2(width) + 1 of them, down to 1x1)
 // and, within a level, the faces +X, -X, +Y, -Y, +Z, -Z; and `lodGenerationScale`. Babylon reads the
 // faces as RGBD (rgbd.hpp) and uploads each image bottom row first: image row 0 is the face's last row
 // (t = 1 of OpenGL's cube map table).
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "engine/sh/babylon_polynomial.hpp"
-
 namespace lp {
+
+// The fields of Babylon's SphericalPolynomial, each an RGB triple (engine/sh/babylon_polynomial.hpp
+// computes them from SH).
+struct BabylonSphericalPolynomial {
+  using Rgb = std::array<double, 3>;
+  Rgb x{}, y{}, z{}, xx{}, yy{}, zz{}, yz{}, zx{}, xy{};
+  bool operator==(const BabylonSphericalPolynomial&) const = default;
+};
 
 inline constexpr int kBabylonEnvVersion = 2;
 inline constexpr double kBabylonLodGenerationScale = 0.8;  // HDRFiltering's, and the reader's default

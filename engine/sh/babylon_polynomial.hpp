@@ -10,15 +10,10 @@
 // stands, Babylon's path with useSphericalHarmonics off, is that second convolution.)
 #include <array>
 
+#include "engine/image/babylon_env.hpp"
 #include "engine/sh/sh_projection.hpp"
 
 namespace lp {
-
-// The fields of Babylon's SphericalPolynomial, each an RGB triple.
-struct BabylonSphericalPolynomial {
-  ShRgb x{}, y{}, z{}, xx{}, yy{}, zz{}, yz{}, zx{}, xy{};
-  bool operator==(const BabylonSphericalPolynomial&) const = default;
-};
 
 // A rotation or reflection of directions: row i gives component i of the result.
 using Matrix3 = std::array<std::array<double, 3>, 3>;

@@ -11,14 +11,16 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "api/bake/babylon_env_chain.hpp"
 #include "engine/image/babylon_env.hpp"
-#include "engine/image/babylon_env_chain.hpp"
 #include "support/cli_run.hpp"
 #include "support/temp_dir.hpp"
 #include "support/test_data.hpp"
 
 namespace lp {
 namespace {
+
+using namespace lp::api;
 
 using nlohmann::json;
 

@@ -1,7 +1,7 @@
 // A cube chain as Babylon's .env: Babylon's cube in direction d holds ours in direction (-d.x, d.y, d.z)
 // (the frame of babylon_env_chain.hpp; its images bottom row first), every level of the full chain is in the
 // file as RGBD PNG, the levels past the chain's are box averages, and the polynomial is there.
-#include "engine/image/babylon_env_chain.hpp"
+#include "api/bake/babylon_env_chain.hpp"
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
@@ -15,6 +15,8 @@
 
 namespace lp {
 namespace {
+
+using namespace lp::api;
 
 // Texel (i, j) of face f at level l: (f + 1, i + 1 + 10 l, j + 1).
 PrefilteredChain numbered_chain(int base_size, int levels) {

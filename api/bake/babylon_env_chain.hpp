@@ -16,7 +16,7 @@
 #include "engine/prefilter/prefilter_chain.hpp"
 #include "engine/sh/babylon_polynomial.hpp"
 
-namespace lp {
+namespace lp::api {
 
 // World z-up directions to Babylon's frame (row i gives component i).
 inline constexpr Matrix3 kWorldToBabylon = {{{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}}};
@@ -31,4 +31,4 @@ Image babylon_face(const Image& strip, int face);
 // at least). Throws lp::Error(InvalidArgument) for another projection or size.
 std::vector<uint8_t> babylon_env_file(const PrefilteredChain& chain, const ShCoefficients& radiance);
 
-}  // namespace lp
+}  // namespace lp::api

@@ -1,4 +1,4 @@
-#include "engine/image/babylon_env_chain.hpp"
+#include "api/bake/babylon_env_chain.hpp"
 
 #include <bit>
 
@@ -9,7 +9,7 @@
 #include "engine/projection/cube_face.hpp"
 #include "engine/projection/cube_layout.hpp"
 
-namespace lp {
+namespace lp::api {
 
 namespace {
 
@@ -64,4 +64,4 @@ std::vector<uint8_t> babylon_env_file(const PrefilteredChain& chain, const ShCoe
   return write_babylon_env(env);
 }
 
-}  // namespace lp
+}  // namespace lp::api
