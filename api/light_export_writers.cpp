@@ -35,9 +35,9 @@ std::string mitsuba_lights(const LightSet& set, MitsubaFrame frame) {
   std::string out = fmt::format(
       "<scene version=\"3.0.0\">\n    <!-- {}.\n         {}.\n         {} -->\n", set.description,
       illuminance_line(set),
-      own ? "Mitsuba's frame (y up): the map loaded as <emitter type=\"envmap\"> without to_world agrees "
+      own ? "Mitsuba's frame (y up): the map loaded as an envmap emitter without to_world agrees "
             "with these lights; a world direction (x, y, z) is (y, z, -x) here"
-          : "Lightprobe's frame (z up): load the map as <emitter type=\"envmap\"> with <transform "
+          : "Lightprobe's frame (z up): load the map as an envmap emitter with <transform "
             "name=\"to_world\"><matrix value=\"0 0 -1 0 1 0 0 0 0 1 0 0 0 0 0 1\"/></transform> to agree");
   for (const ExportLight& l : set.lights) {
     const Direction travel = negated(own ? mitsuba_direction(l.direction) : l.direction);

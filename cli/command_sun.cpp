@@ -62,7 +62,7 @@ ImageFormat residual_format(const std::string& file) {
 void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
   const InvalidPixelPolicy policy = take_invalid_pixel_policy(args);
-  const api::LightExportQuery format = api::parse_light_export_query(args.take_query({"format", "frame"}));
+  const api::LightExportQuery answer = api::parse_light_export_query(args.take_query({"format", "frame"}));
   const auto file = args.take("output");
   const auto residual_file = args.take("residual");
   const ImageFormat format = residual_file ? residual_format(*residual_file) : ImageFormat::Exr;
@@ -77,11 +77,11 @@ void run(Arguments& args) {
     written = residual_file;
   }
   Output out(file);
-  if (format.format != api::LightFormat::Answer) {
+  if (answer.format != api::LightFormat::Answer) {
     const double illuminance = upper_hemisphere_illuminance(*loaded.map);
     out.write(api::export_lights(extraction.sun ? api::sun_light_set(*extraction.sun, illuminance)
                                                 : api::no_sun_light_set(extraction.reason, illuminance),
-                                 format.format, format.frame));
+                                 answer.format, answer.frame));
     out.finish();
     return;
   }

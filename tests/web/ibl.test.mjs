@@ -156,7 +156,8 @@ test('a map without a sun says so, with the API\'s reason, and shows no marker',
   await page.locator('#sun-figures[data-found=false]').waitFor();
   const sun = await (await fetch(`${server.base}/api/v1/envmaps/overcast/sun`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{}' })).json();
   assert.equal(sun.found, false);
-  assert.equal(await page.locator('#sun-figures').innerText(), `sun\nnone in this map: ${sun.reason}`);
+  assert.equal(await page.locator('#sun-figures').innerText(),
+    `sun\nnone in this map: ${sun.reason}\nsun parameters\nthreshold ${shown(sun.parameters.min_contrast)} times the sky around it, least share ${shown(sun.parameters.min_share)}`);
   assert.ok(await page.locator('#sun-marker').isHidden());
   assert.ok(await page.locator('#maps-panel .error').isHidden());
 });
@@ -211,13 +212,14 @@ test('the sun threshold is the API\'s, and the one set decides whether the sun i
   assert.equal(sun.found, true);
 
   // Above the sun's contrast: none, and the figures say why and with which threshold.
-  await input.fill(String(Math.ceil(sun.contrast * 2)));
+  const high = 10 ** Math.ceil(Math.log10(sun.contrast * 2));
+  await input.fill(String(high));
   await page.locator('#sun-find').click();
   await page.locator('#sun-figures[data-found=false]').waitFor();
   const figures = await page.locator('#sun-figures').innerText();
   assert.match(figures, /min_contrast/);
-  assert.match(figures, new RegExp(`threshold ${Math.ceil(sun.contrast * 2)}`));
-  assert.equal((await post({ min_contrast: Math.ceil(sun.contrast * 2) })).cached, true, 'the page asked with it');
+  assert.match(figures, new RegExp(`threshold ${shown(high)} times`));
+  assert.equal((await post({ min_contrast: high })).cached, true, 'the page asked with it');
   // Under it: found again.
   await input.fill(String(Math.floor(sun.contrast / 2)));
   await page.locator('#sun-find').click();

@@ -39,7 +39,7 @@ function showFigures(sun) {
     ['share of power', `${num(100 * sun.share, 3)} %`],
     ['residual map', sun.residual],
   ] : [['sun', `none in this map: ${sun.reason}`]];
-  items.push(['found with', `threshold ${num(sun.parameters.min_contrast)} times the sky around it, least share ${num(sun.parameters.min_share)}`]);
+  items.push(['sun parameters', `threshold ${num(sun.parameters.min_contrast)} times the sky around it, least share ${num(sun.parameters.min_share)}`]);
   figures.replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
   figures.hidden = false;
 }
