@@ -209,6 +209,11 @@ void add_prefilter_parameters(std::vector<Doc>& d) {
   d.push_back(range_doc(schema("PrefilterJob", {"properties", "texel_samples"}), kPrefilterTexelSamples));
   d.push_back(enum_doc(body(path, "projection"), std::optional(r.params.projection)));
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "projection"}), std::optional<Projection>()));
+  d.push_back(enum_doc(body(path, "level_roughness"), std::optional(r.params.level_roughness)));
+  d.push_back(
+      enum_doc(schema("PrefilterJob", {"properties", "level_roughness"}), std::optional<LevelRoughness>()));
+  d.push_back(enum_doc(body(path, "target"), std::optional<BakeTarget>()));
+  d.push_back(enum_doc(schema("PrefilterJob", {"properties", "target"}), std::optional<BakeTarget>()));
   d.push_back(enum_doc(body(path, "format"), std::optional(r.format)));
   d.push_back(enum_doc(body(path, "precision"), std::optional(r.precision)));
   d.push_back(enum_doc(schema("PrefilterJob", {"properties", "format"}), std::optional<PrefilterFormat>()));

@@ -62,8 +62,8 @@ std::vector<std::pair<std::string, std::string>> prefilter_conventions(const Pre
   std::vector<std::pair<std::string, std::string>> conventions = {
       {"projection", projection_convention(projection)},
       {"frame", "right-handed, z up: direction = (sin theta cos phi, sin theta sin phi, cos theta)"},
-      {"roughness",
-       "perceptual: level i of n has roughness i / (n - 1), GGX alpha = roughness^2 (the brdf-lut's)"},
+      {"roughness", fmt::format("perceptual, GGX alpha = roughness^2 (the brdf-lut's): {}",
+                                level_roughness_formula(request.params.level_roughness))},
       {"lobe",
        "GGX (Trowbridge-Reitz) with the split-sum assumption N = V = R: sum L(l) n.l / sum n.l over l = "
        "reflect(n, h), h ~ D(h) n.h, by filtered importance sampling (Krivanek and Colbert 2008), at each "

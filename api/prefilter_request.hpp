@@ -1,7 +1,9 @@
 #pragma once
 // POST /envmaps/{id}/prefilter body: the chain's parameters and the files it is delivered as.
+#include <optional>
 #include <string>
 
+#include "api/bake/bake_target.hpp"
 #include "api/params.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/prefilter/prefilter_params.hpp"
@@ -26,11 +28,16 @@ struct PrefilterRequest {
   PrefilterParams params;
   PrefilterFormat format = PrefilterFormat::Ktx2;
   PixelPrecision precision = PixelPrecision::Half;
+  // A bake target: the job makes the target's chain (params as its chain_params sets them) and then its
+  // files instead of the chain's own (format is then not asked).
+  std::optional<BakeTarget> target;
   bool operator==(const PrefilterRequest&) const = default;
 };
 
-// {"levels":6,"base_size":256,"samples":1024,"projection":"latlong","format":"ktx2","precision":"half"},
-// every field optional (defaults shown); an empty body means all defaults. Ranges from
+// {"levels":6,"base_size":256,"samples":1024,"projection":"latlong","level_roughness":"linear",
+// "format":"ktx2","precision":"half","target":"gltf"}, every field optional (defaults shown, no target by
+// default); an empty body means all defaults. With a target, a field the target fixes given another
+// value is a 400 naming it (apply_bake_target). Ranges from
 // engine/core/limits.hpp (kPrefilter*), the rest of PrefilterParams::validate, and at most
 // kPrefilterTexelSamples texel samples (400 invalid_field naming the limit).
 PrefilterRequest parse_prefilter_request(const std::string& body);

@@ -2,12 +2,15 @@
 // (`lightprobe sh`'s answer with its defaults), the prefiltered chain (the files of POST
 // /api/v1/envmaps/{id}/prefilter, its options the request's fields), the DFG table (`lightprobe
 // brdf-lut`'s EXR with its defaults) and manifest.json, which lists every file with its conventions.
+// With --target NAME: the files one engine loads instead (api/bake: the target's chain, then its files).
 #include <fmt/format.h>
 
 #include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "api/bake/bake_manifest.hpp"
+#include "api/bake/bake_request.hpp"
 #include "api/brdf_lut_request.hpp"
 #include "api/prefilter_files.hpp"
 #include "api/prefilter_request.hpp"
@@ -30,10 +33,18 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr std::string_view kSynopsis = "bake MAP --out DIR [options]";
+constexpr std::string_view kSynopsis = "bake MAP --out DIR [--target NAME] [options]";
 constexpr const char* kShFile = "sh.json";
 constexpr const char* kLutFile = "brdf_lut.exr";
-constexpr const char* kManifestFile = "manifest.json";
+using api::kManifestFile;
+
+// "  gltf  summary" lines of the available targets.
+std::string target_lines() {
+  std::string out;
+  for (const api::BakeTarget t : api::available_targets())
+    out += fmt::format("    {:<10}{}\n", enum_name(t), api::target_spec(t).summary);
+  return out;
+}
 
 std::string help() {
   const api::PrefilterRequest d;
@@ -47,7 +58,12 @@ std::string help() {
              "{}, every file with its conventions. Progress on standard error.\n\n",
              kShFile, api::kDefaultShBands, kLutFile, api::kDefaultDfgLutSize, kManifestFile) +
          option_line("--out DIR", "the folder to write (required)") +
-         option_line("--projection NAME", choices(d.params.projection)) +
+         option_line("--target NAME", "the files one engine loads instead of the bundle (one of: " +
+                                          api::available_target_names() +
+                                          "); the target fixes some options") +
+         target_lines() + option_line("--projection NAME", choices(d.params.projection)) +
+         option_line("--level-roughness NAME",
+                     choices(d.params.level_roughness) + ": each level's roughness") +
          option_line("--format NAME", choices(d.format) + ": one EXR a level, or one KTX2 file") +
          option_line("--precision NAME", choices(d.precision)) +
          option_line("--levels N", "mip levels, " + range(limits::kPrefilterLevels, d.params.levels)) +
@@ -130,6 +146,17 @@ json bake_lut(const fs::path& dir) {
              "bias)"}}}};
 }
 
+// The target's chain, then its files.
+void bake_target(const LoadedMap& loaded, const api::PrefilterRequest& request, const fs::path& dir,
+                 ProgressStyle progress) {
+  std::optional<PrefilteredChain> chain;
+  if (api::makes_chain(request)) chain = prefilter(*loaded.map, request.params, progress);
+  const ShCoefficients sh = project_sh(loaded.map->image(), api::kBakeShBands);
+  const api::BakeInput input{loaded.name, *loaded.map, chain ? &*chain : nullptr, sh, request};
+  for (const api::BakeFile& file : api::target_spec(*request.target).write(input))
+    write_file(dir, file.name, file.bytes);
+}
+
 void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
   const fs::path dir(args.take_required("out", kSynopsis));
@@ -138,6 +165,7 @@ void run(Arguments& args) {
   const api::PrefilterRequest request = api::parse_prefilter_request(args.take_rest_as_json().dump());
   const LoadedMap loaded = load_map(args.positional()[0], policy);
   make_folder(dir);
+  if (request.target) return bake_target(loaded, request, dir, progress);
   const json sh = bake_sh(*loaded.map, dir);
   const json chain = bake_chain(loaded, request, dir, progress);
   const json manifest = {

@@ -5,7 +5,7 @@
 # Each entry: the target the engine links | the package | its version, if one is required.
 set(LIGHTPROBE_ENGINE_DEPENDENCIES "Threads::Threads|Threads" "TBB::tbb|TBB" "embree|embree|3"
     "OpenEXR::OpenEXR|OpenEXR" "Imath::Imath|Imath" "tinyobjloader::tinyobjloader|tinyobjloader" "fmt::fmt|fmt"
-    "nlohmann_json::nlohmann_json|nlohmann_json" "DNNL::dnnl|dnnl")
+    "nlohmann_json::nlohmann_json|nlohmann_json" "DNNL::dnnl|dnnl" "JPEG::JPEG|JPEG")
 
 macro(lightprobe_find_engine_dependencies find_command)
   foreach(_lightprobe_entry IN LISTS LIGHTPROBE_ENGINE_DEPENDENCIES)

@@ -76,11 +76,12 @@ inline constexpr Range<double> kFresnelStepDeg{0.01, 90.0};
 inline constexpr Range<int> kShBands{1, 5};
 
 // Prefiltered specular chains (engine/prefilter): the width of level 0 in texels (a lat-long level is
-// twice as wide as high), the number of levels (each half the previous, at most log2 of the base width
-// so that the last is at least 2 x 1) and the GGX samples per texel. A 2048-wide chain of 16384
+// twice as wide as high), the number of levels (each half the previous: at most log2 of the base width
+// so that the last is at least 2 x 1, or a cube's full pyramid down to 1 x 1 faces, one more) and the
+// GGX samples per texel. A 2048-wide chain of 16384
 // samples is minutes of work on a few cores, the most a job should hold a runner for.
 inline constexpr Range<int> kPrefilterBaseSize{8, 2048};
-inline constexpr Range<int> kPrefilterLevels{1, 11};
+inline constexpr Range<int> kPrefilterLevels{1, 12};
 inline constexpr Range<int> kPrefilterSamples{16, 16384};
 // Sun extraction (engine/sun/sun_params.hpp says what each is).
 inline constexpr Range<double> kSunThreshold{0.001, 1.0};

@@ -12,6 +12,7 @@
 #include "engine/image/image_limits.hpp"
 #include "engine/image/ktx2.hpp"
 #include "engine/image/ktx2_layout.hpp"
+#include "engine/image/ktx_key_values.hpp"
 
 namespace lp {
 namespace {
@@ -102,25 +103,7 @@ void check_dfd(const Reader& in, const Header& h, PixelPrecision precision) {
 }
 
 std::map<std::string, std::string> read_key_values(const Reader& in, const Header& h) {
-  std::map<std::string, std::string> out;
-  const auto kvd = in.range(h.kvd_offset, h.kvd_length, "the key/value data");
-  size_t at = 0;
-  while (at < kvd.size()) {
-    if (kvd.size() - at < 4) corrupt("a key/value length past the end of its section");
-    uint32_t length;
-    std::memcpy(&length, kvd.data() + at, 4);
-    at += 4;
-    if (length < 2 || length > kvd.size() - at) corrupt("a key/value pair past the end of its section");
-    const std::string pair(reinterpret_cast<const char*>(kvd.data() + at), length);
-    const size_t nul = pair.find('\0');
-    if (nul == 0 || nul == std::string::npos) corrupt("a key without its NUL");
-    std::string value = pair.substr(nul + 1);
-    if (!value.empty() && value.back() == '\0') value.pop_back();
-    if (!out.emplace(pair.substr(0, nul), std::move(value)).second) corrupt("a key given twice");
-    at += (size_t(length) + 3) / 4 * 4;
-  }
-  if (at != kvd.size()) corrupt("key/value padding past the end of its section");
-  return out;
+  return read_ktx_key_values(in.range(h.kvd_offset, h.kvd_length, "the key/value data"), "KTX2");
 }
 
 // A level of `height` rows: one face, or a cube map's faces one after the other.

@@ -2,7 +2,7 @@
 // A prefiltered specular mip chain of a map, in any projection (engine/projection): level 0 is the map
 // resampled to the base size (filtered, its power kept: resample_latlong for lat-long, reproject for
 // the others), and level i > 0, half the size of level i - 1, holds at each texel the GGX convolution of
-// roughness i / (levels - 1) in the texel's direction (lobe_convolution.hpp), read from the map by
+// params.roughness(i) in the texel's direction (lobe_convolution.hpp), read from the map by
 // filtered importance sampling. Every level is evaluated at its own texels, never resampled from another
 // projection. A cube's levels are strips of its six faces; a cross is made as that strip and laid out
 // at the end, so its empty cells cost no work and stay black.

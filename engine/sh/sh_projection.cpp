@@ -8,6 +8,7 @@
 #include "engine/core/constants.hpp"
 #include "engine/envmap/envmap.hpp"
 #include "engine/image/image.hpp"
+#include "engine/sh/gauss_legendre.hpp"
 #include "engine/sh/row_harmonics.hpp"
 
 namespace lp {
@@ -17,10 +18,8 @@ namespace {
 // K_lm P_l^m(cos theta) sin theta, by 8-point Gauss-Legendre (exact to rounding for these smooth
 // polynomials over a row), at [sh_index(l, m)] for m >= 0.
 ShBasis row_theta_integrals(int y, int height, int bands) {
-  static constexpr std::array<double, 4> kNodes = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                                                   0.9602898564975363};
-  static constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.3137066458778873,
-                                                     0.2223810344533745, 0.1012285362903763};
+  const auto& kNodes = kGaussLegendre8Nodes;
+  const auto& kWeights = kGaussLegendre8Weights;
   const double t0 = kPi * y / height, t1 = kPi * (y + 1) / height;
   const double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
   ShBasis out{};

@@ -5,9 +5,12 @@
 // when the job starts, not while it waits in the queue. Nothing is kept across restarts: a chain
 // is a pure function of the map and the request, made again by a new job. So a job queued, running or
 // done answers a second request of the same map content (its fingerprint) and the same parameters.
+// A request with a bake target makes the target's chain (if it takes one), then the target's files,
+// kept in memory beside the chain and counted in the budget with it.
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "api/prefilter_request.hpp"
 #include "engine/core/memory_budget.hpp"
@@ -30,6 +33,8 @@ class PrefilterJob : public Job {
   // map content and every parameter the same, and the job queued, running (no cancel asked) or done.
   bool answers(const std::string& envmap_fingerprint, const api::PrefilterRequest& request) const;
   std::shared_ptr<const PrefilteredChain> chain() const;  // null until done
+  // The target's files: null until done, and without a target.
+  std::shared_ptr<const std::vector<api::BakeFile>> target_files() const;
   int64_t retained_bytes() const override;
 
  protected:
@@ -44,6 +49,8 @@ class PrefilterJob : public Job {
   // Reserves the working bytes at the start; while work in flight holds them, waits for it. Empty if a
   // cancel or a shutdown came first.
   MemoryReservation reserve_working_memory() const;
+  // The target's files of the finished chain (null without a target), their bytes added to memory_.
+  std::shared_ptr<const std::vector<api::BakeFile>> write_target_files(const PrefilteredChain* chain);
 
   std::shared_ptr<const EnvMap> envmap_;  // released when the job ends
   const MemoryBudget budget_;
@@ -51,6 +58,8 @@ class PrefilterJob : public Job {
 
   mutable std::mutex mutex_;
   std::shared_ptr<const PrefilteredChain> chain_;
+  std::shared_ptr<const std::vector<api::BakeFile>> target_files_;
+  bool done_ = false;
 };
 
 }  // namespace lp::server

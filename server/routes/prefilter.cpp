@@ -100,9 +100,24 @@ std::shared_ptr<const PrefilteredChain> finished_chain(const PrefilterJob& job) 
   return chain;
 }
 
+// A target's file, written when the job finished.
+void target_file(App& app, const PrefilterJob& job, const std::string& name, httplib::Response& res) {
+  const auto files = job.target_files();
+  if (!files)
+    throw api::ApiError(api::ErrorCode::NoImageYet, fmt::format("prefilter '{}' is {} and has no files yet",
+                                                                job.id(), enum_name(job.status())));
+  for (const api::BakeFile& f : *files) {
+    if (f.name != name) continue;
+    auto memory = app.memory.reserve(int64_t(f.bytes.size()), MemoryUse::Transient, "sending " + name);
+    return send_reserved(res, std::vector<uint8_t>(f.bytes), f.content_type, std::move(memory));
+  }
+  throw api::not_found("no file '" + api::excerpt(name) + "' in this job's files");
+}
+
 void file(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto job = find_prefilter(app, path_param(req, 1));
   const std::string name = path_param(req, 2);
+  if (job->request().target) return target_file(app, *job, name, res);
   const int64_t bytes = api::prefilter_file_bytes(job->request(), name);  // 404 for an unknown name
   const auto chain = finished_chain(*job);
   auto memory = app.memory.reserve(bytes, MemoryUse::Transient, "encoding " + name);

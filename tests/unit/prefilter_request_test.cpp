@@ -46,7 +46,11 @@ TEST(PrefilterRequest, EmptyBodyMeansDefaults) {
 TEST(PrefilterRequest, BadFieldsAreNamed) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"levels":0})", "'levels'"},
-      {R"({"levels":12})", "'levels'"},
+      {R"({"levels":13})", "'levels'"},
+      {R"({"levels":10,"base_size":256,"projection":"cube"})",
+       "'levels': must be at most log2(base_size) + 1 = 9"},
+      {R"({"level_roughness":"steep"})", "'level_roughness'"},
+      {R"({"target":"maya"})", "'target': 'maya' is not one of: gltf, filament"},
       {R"({"levels":9,"base_size":256})", "'levels': must be at most log2(base_size) = 8"},
       {R"({"base_size":4})", "'base_size'"},
       {R"({"base_size":4096})", "'base_size'"},

@@ -1,0 +1,108 @@
+// The gltf target: NAME.gltf, a glTF 2.0 scene holding only its environment light, as
+// KHR_lights_environment (draft) declares it: the radiance as a KTX2 cube (RGBA16F, the full pyramid of
+// mip levels down to 1 x 1 faces, prefiltered with lod = roughness (levels - 1)) and the 9 x 3 irradiance
+// coefficients, in glTF's y-up frame.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "api/api_error.hpp"
+#include "api/bake/bake_manifest.hpp"
+#include "api/bake/targets.hpp"
+#include "api/prefilter_files.hpp"
+#include "api/prefilter_request.hpp"
+#include "engine/prefilter/prefilter_chain.hpp"
+#include "engine/projection/cube_face.hpp"
+#include "engine/sh/sh_rotation.hpp"
+
+namespace lp::api {
+namespace {
+
+constexpr const char* kExtension = "KHR_lights_environment";
+
+std::optional<PrefilterParams> gltf_chain(const PrefilterRequest& request) {
+  if (request.precision != PixelPrecision::Half)
+    throw invalid_field("precision", "the target 'gltf' writes RGBA16F cubes: 'half' only");
+  const int size = request.params.base_size;
+  if ((size & (size - 1)) != 0)
+    throw invalid_field("base_size", fmt::format("the target 'gltf' needs a power of two, got {}", size));
+  PrefilterParams p = request.params;
+  p.projection = Projection::Cube;
+  p.level_roughness = LevelRoughness::Linear;
+  p.levels = prefilter_max_levels(Projection::Cube, size);
+  return p;
+}
+
+// The 9 x 3 irradiance coefficients E_lm = A_l L_lm in glTF's frame.
+Json irradiance_coefficients(const ShCoefficients& radiance) {
+  const ShCoefficients e = rotate_sh(sh_irradiance(radiance), world_to_engine());
+  Json out = Json::array();
+  for (const ShRgb& c : e.rgb) out.push_back({c[0], c[1], c[2]});
+  return out;
+}
+
+Json gltf_document(const BakeInput& in, const std::string& cube_file) {
+  const Json light = {
+      {"name", in.name}, {"irradianceCoefficients", irradiance_coefficients(in.sh)}, {"cubemap", 0}};
+  return {
+      {"asset", {{"version", "2.0"}, {"generator", "lightprobe bake --target gltf"}}},
+      {"extensionsUsed", {kExtension}},
+      {"extensions", {{kExtension, {{"cubemaps", {{{"source", 0}, {"layer", 0}}}}, {"lights", {light}}}}}},
+      {"images", {{{"name", in.name + " radiance cube"}, {"uri", cube_file}, {"mimeType", "image/ktx2"}}}},
+      {"scene", 0},
+      {"scenes", {{{"name", in.name}, {"extensions", {{kExtension, {{"light", 0}}}}}}}}};
+}
+
+std::vector<uint8_t> cube_ktx2(const BakeInput& in) {
+  PrefilterRequest request = in.request;
+  request.target.reset();
+  request.format = PrefilterFormat::Ktx2;
+  return encode_prefilter_file(*in.chain, request, prefilter_file_names(request).front());
+}
+
+Json roughness_to_lod(const PrefilterParams& p) {
+  Json levels = Json::array();
+  for (int i = 0; i < p.levels; ++i) levels.push_back(p.roughness(i));
+  return {{"text", "lod = roughness (levels - 1), KHR_lights_environment's; " +
+                       std::string(level_roughness_formula(p.level_roughness))},
+          {"levels", p.levels},
+          {"roughness", levels}};
+}
+
+std::vector<BakeFile> write_gltf(const BakeInput& in) {
+  const std::string stem = bake_file_stem(in.name);
+  const std::string gltf_file = stem + ".gltf", cube_file = stem + "_radiance.ktx2";
+  std::vector<BakeFile> files;
+  const std::string gltf = gltf_document(in, cube_file).dump(2) + "\n";
+  files.push_back({gltf_file, "model/gltf+json", {gltf.begin(), gltf.end()}});
+  files.push_back({cube_file, "image/ktx2", cube_ktx2(in)});
+  Json manifest = manifest_common(in, BakeTarget::Gltf);
+  manifest["face_order"] =
+      "KTX2 cube faces +X, -X, +Y, -Y, +Z, -Z of glTF's frame, each oriented as OpenGL's cube map table "
+      "(the KTX2 specification's)";
+  manifest["roughness_to_lod"] = roughness_to_lod(in.chain->params);
+  manifest["irradiance_coefficients"] =
+      "KHR_lights_environment's irradianceCoefficients: E_lm = A_l L_lm (the irradiance of sh, Ramamoorthi "
+      "and Hanrahan 2001) in glTF's frame, in sh.convention's basis and order, each [r, g, b]";
+  manifest["import"] = {
+      {"extension", kExtension},
+      {"gltf", gltf_file},
+      {"layout", "the draft's root cubemaps (image, layer) and lights; scenes[0] names light 0"}};
+  Json names = Json::array();
+  for (const BakeFile& f : files) names.push_back(f.name);
+  names.push_back(kManifestFile);
+  manifest["files"] = names;
+  files.push_back(manifest_file(manifest));
+  return files;
+}
+
+}  // namespace
+
+TargetSpec gltf_target() {
+  return {BakeTarget::Gltf,
+          "glTF 2.0 with KHR_lights_environment: a KTX2 RGBA16F cube with its full prefiltered pyramid and "
+          "the 9 x 3 irradiance SH",
+          gltf_chain, write_gltf};
+}
+
+}  // namespace lp::api
