@@ -3,6 +3,7 @@
 #include "api/sh_request.hpp"
 #include "api/sh_schema.hpp"
 #include "engine/envmap/envmap.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "engine/projection/cube_face.hpp"
 #include "engine/sh/sh_projection.hpp"
 
@@ -39,7 +40,12 @@ Json manifest_common(const BakeInput& input, BakeTarget target) {
   return {{"map", {{"name", input.name}, {"width", input.map.width()}, {"height", input.map.height()}}},
           {"target", enum_name(target)},
           {"frame", frame_json()},
-          {"units", {{"radiance", "linear Rec.709 (sRGB primaries, D65 white) radiance, as in the map"}}},
+          {"units",
+           {{"radiance", "linear Rec.709 (sRGB primaries, D65 white) radiance, as in the map"},
+            {"illuminance", upper_hemisphere_illuminance(input.map)},
+            {"illuminance_text",
+             "the upper hemisphere's illuminance (luminance x cos theta over theta < 90 degrees from the "
+             "zenith) in the map's units: lux for a map in cd/m^2; pbrt-v4's `illuminance` of the map"}}},
           {"sh", sh_of(input.sh)}};
 }
 

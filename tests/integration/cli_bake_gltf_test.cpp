@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "engine/envmap/envmap.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/image/ktx2.hpp"
 #include "engine/prefilter/prefilter_chain.hpp"
@@ -85,6 +86,8 @@ TEST_F(CliBakeGltf, TheCubeIsTheEnginesFullPyramid) {
   ASSERT_EQ(manifest["roughness_to_lod"]["roughness"].size(), 5u);
   for (int i = 0; i < 5; ++i)
     EXPECT_DOUBLE_EQ(manifest["roughness_to_lod"]["roughness"][i].get<double>(), i / 4.0);
+  EXPECT_NEAR(manifest["units"]["illuminance"].get<double>(), upper_hemisphere_illuminance(map()),
+              1e-9 * upper_hemisphere_illuminance(map()));
 }
 
 // Level 0's +Y face (index 2) holds the sky, its -Y face (index 3) the ground.
