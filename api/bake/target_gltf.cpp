@@ -110,7 +110,8 @@ std::vector<BakeFile> write_gltf(const BakeInput& in) {
        "E_lm = A_l L_lm (irradiance, not radiance: Babylon.js's loader divides by pi to get the Lambertian "
        "radiance) in Babylon.js's scene frame and basis: sh.convention's basis with the Condon-Shortley "
        "sign on m = -1 and m = 1, in sh.convention's order, each [r, g, b]"},
-      {"rotation", "identity: the faces and coefficients are written in the frame the loader uses"}};
+      {"rotation", "identity: the faces and coefficients are written in the frame the loader uses"},
+      {"intensity", "1, written out: Babylon.js's loader scales the coefficients by it and has no default"}};
   manifest["import"] = {
       {"extension", kExtension},
       {"gltf", gltf_file},
@@ -127,8 +128,8 @@ std::vector<BakeFile> write_gltf(const BakeInput& in) {
 
 TargetSpec gltf_target() {
   return {BakeTarget::Gltf,
-          "glTF 2.0 with KHR_lights_environment: a KTX2 RGBA16F cube with its full prefiltered pyramid and "
-          "the 9 x 3 irradiance SH",
+          "glTF 2.0 with KHR_lights_environment (a KTX2 RGBA16F cube with its full prefiltered pyramid and "
+          "the 9 x 3 irradiance SH) and EXT_lights_image_based (the same levels as RGBD PNG faces)",
           gltf_chain, write_gltf};
 }
 
