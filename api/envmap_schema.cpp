@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/envmap/envmap_sampler.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "engine/sampling/cdf_1d.hpp"
 
 namespace lp::api {
@@ -26,6 +27,7 @@ Json envmap_metadata(const EnvMapInfo& info, const EnvMap& map) {
           {"mean_radiance", rgb_json(map.mean_radiance())},
           {"max_luminance", map.max_luminance(LuminanceMode::Average)},
           {"power", rgb_json(map.power())},
+          {"illuminance", upper_hemisphere_illuminance(map)},
           {"clamped_negative_values", map.invalid_pixels().clamped_negative_values},
           {"most_negative_value", map.invalid_pixels().most_negative_value},
           {"non_finite_pixels", map.invalid_pixels().non_finite_pixels},

@@ -4,6 +4,7 @@
 
 #include "api/brdf_lut_request.hpp"
 #include "api/fresnel_request.hpp"
+#include "api/light_export.hpp"
 #include "api/prefilter_request.hpp"
 #include "api/render_image_pass.hpp"
 #include "api/sample_request.hpp"
@@ -222,13 +223,15 @@ void add_prefilter_parameters(std::vector<Doc>& d) {
 }
 
 void add_sun_parameters(std::vector<Doc>& d) {
-  const std::string sun = "/api/v1/envmaps/{id}/sun";
   const SunParams p;
-  d.push_back(range_doc(body(sun, "threshold"), limits::kSunThreshold, p.threshold));
-  d.push_back(range_doc(body(sun, "max_radius_deg"), limits::kSunMaxRadiusDeg, p.max_radius_deg));
-  d.push_back(range_doc(body(sun, "min_share"), limits::kSunMinShare, p.min_share));
+  for (const SunField& f : kSunFields)
+    d.push_back(range_doc(schema("SunParameters", {"properties", f.name}), f.range, p.*f.member));
   d.push_back(
       enum_doc(schema("RenderLighting", {"properties", "sun"}), std::optional(render::SunMode::None)));
+  for (const std::string path : {"/api/v1/envmaps/{id}/median-cut", "/api/v1/envmaps/{id}/sun"}) {
+    d.push_back(enum_doc(query(path, "post", "format"), std::optional(LightFormat::Answer)));
+    d.push_back(enum_doc(query(path, "post", "frame"), std::optional(MitsubaFrame::Mitsuba)));
+  }
 }
 
 void add_projection_parameters(std::vector<Doc>& d) {

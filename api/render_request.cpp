@@ -10,6 +10,7 @@
 #include "api/api_error.hpp"
 #include "api/engine_validation.hpp"
 #include "api/excerpt.hpp"
+#include "api/sun_request.hpp"
 #include "engine/core/validate.hpp"
 #include "engine/fresnel/metals.hpp"
 
@@ -287,9 +288,12 @@ Lighting parse_lighting(const Json* l, const RequestLimits& limits) {
   lighting.lights = std::min(lighting.lights, max_lights);
   if (!l) return lighting;
   const std::string prefix = "lighting";
-  reject_unknown_fields(*l, {"mode", "sun", "lights", "rotation_deg", "intensity", "visible"}, prefix);
+  reject_unknown_fields(
+      *l, {"mode", "sun", "sun_parameters", "lights", "rotation_deg", "intensity", "visible"}, prefix);
   lighting.mode = json_enum(*l, "mode", lighting.mode, prefix);
   lighting.sun = json_enum(*l, "sun", lighting.sun, prefix);
+  if (const Json* p = object_member(*l, "sun_parameters", prefix))
+    lighting.sun_parameters = parse_sun_params(*p, field_name(prefix, "sun_parameters"));
   lighting.lights = int(json_int(*l, "lights", lighting.lights, 1, max_lights, prefix));
   lighting.rotation_deg = json_float(*l, "rotation_deg", lighting.rotation_deg, prefix);
   lighting.intensity = json_float(*l, "intensity", lighting.intensity, prefix);

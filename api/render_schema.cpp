@@ -1,5 +1,7 @@
 #include "api/render_schema.hpp"
 
+#include "api/sun_request.hpp"
+
 namespace lp::api {
 
 void describe_render(Json& out, const RenderRequest& request, const RenderProgress& progress) {
@@ -25,6 +27,7 @@ void describe_render(Json& out, const RenderRequest& request, const RenderProgre
       request.preset ? Json{{"preset", *request.preset}} : Json{{"objects", request.scene.objects.size()}};
   out["lighting_mode"] = enum_name(request.lighting.mode);
   out["lighting_sun"] = enum_name(request.lighting.sun);
+  out["lighting_sun_parameters"] = sun_params_json(request.lighting.sun_parameters);
   const auto& stats = progress.stats;
   out["samples"] = stats.samples;
   out["rays"] = stats.rays;

@@ -28,7 +28,11 @@ Ordered convention() {
           {"m_positive", "sqrt(2) K_lm cos(m phi) P_l^m(cos theta)"},
           {"m_negative", "sqrt(2) K_l|m| sin(|m| phi) P_l^|m|(cos theta)"},
           {"reconstruction", "f(w) = sum over l, m of c_lm Y_lm(w)"},
-          {"quadrature", "every pixel weighted by its exact solid angle at its centre direction"}};
+          {"quadrature",
+           "every pixel a patch of constant radiance, Y_lm integrated over its area: the theta part "
+           "K_lm P_l^m(cos theta) sin theta over the row's theta span by 8-point Gauss-Legendre (exact to "
+           "rounding for these bands), the phi part in closed form, dphi sinc(m dphi / 2) times cos(m phi) "
+           "or sin(m phi) at the column's centre; summed in double precision row by row"}};
 }
 
 Ordered window_json(const ShRequest& r) {

@@ -1,20 +1,25 @@
 #include "api/sun_request.hpp"
 
-#include "api/params.hpp"
-#include "engine/core/limits.hpp"
-
 namespace lp::api {
 
-SunParams parse_sun_request(const std::string& body) {
-  const Json j = parse_json_object_or_empty(body);
-  reject_unknown_fields(j, {"threshold", "max_radius_deg", "min_share"});
-  using namespace limits;
+SunParams parse_sun_params(const Json& j, const std::string& prefix) {
+  std::vector<std::string> names;
+  for (const SunField& f : kSunFields) names.push_back(f.name);
+  reject_unknown_fields(j, names, prefix);
   SunParams p;
-  p.threshold = json_double(j, "threshold", p.threshold, kSunThreshold.min, kSunThreshold.max);
-  p.max_radius_deg =
-      json_double(j, "max_radius_deg", p.max_radius_deg, kSunMaxRadiusDeg.min, kSunMaxRadiusDeg.max);
-  p.min_share = json_double(j, "min_share", p.min_share, kSunMinShare.min, kSunMinShare.max);
+  for (const SunField& f : kSunFields)
+    p.*f.member = json_double(j, f.name, p.*f.member, f.range.min, f.range.max, prefix);
   return p;
+}
+
+SunParams parse_sun_request(const std::string& body) {
+  return parse_sun_params(parse_json_object_or_empty(body), "");
+}
+
+Json sun_params_json(const SunParams& params) {
+  Json out = Json::object();
+  for (const SunField& f : kSunFields) out[f.name] = params.*f.member;
+  return out;
 }
 
 std::string sun_residual_id(const std::string& id) {

@@ -1,14 +1,19 @@
 #pragma once
-// POST /envmaps/{id}/sun body.
+// POST /envmaps/{id}/sun body, and the same parameters in a render's lighting.sun_parameters.
 #include <string>
 
+#include "api/params.hpp"
 #include "engine/sun/sun_params.hpp"
 
 namespace lp::api {
 
-// {"threshold":0.05,"max_radius_deg":5,"min_share":0.05}, every field optional (defaults shown), each a
-// number in its range (engine/core/limits.hpp). An empty body means all defaults.
+// {"threshold":0.05,"max_radius_deg":5,"min_share":0.005,"min_contrast":50} (engine/sun/sun_params.hpp
+// declares each: name, default, range), every field optional. An empty body means all defaults.
 SunParams parse_sun_request(const std::string& body);
+// The same fields from an object; errors name them under `prefix` ("lighting.sun_parameters.min_share").
+SunParams parse_sun_params(const Json& object, const std::string& prefix);
+// {"threshold": ..., ...}: every field.
+Json sun_params_json(const SunParams& params);
 
 // The id under which the residual of map `id` is registered: "<id>-sun".
 std::string sun_residual_id(const std::string& id);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "api/sun_request.hpp"
 #include "engine/core/constants.hpp"
 
 namespace lp::api {
@@ -20,6 +21,7 @@ void add_sun(Json& out, const Sun& s) {
   out["color"] = s.color;
   out["irradiance"] = s.irradiance;
   out["share"] = s.share;
+  out["contrast"] = std::isfinite(s.contrast) ? Json(s.contrast) : Json(nullptr);
   out["removed_radius"] = s.removed_radius;
   out["removed_pixels"] = s.removed_pixels;
   out["fill"] = s.fill;
@@ -36,9 +38,7 @@ Json sun_json(const SunExtraction& e, const std::optional<std::string>& residual
   const Power none{};
   out["power"] = {{"map", e.map_power}, {"residual", e.residual_power}, {"sun", e.sun ? e.sun->power : none}};
   out["residual"] = residual ? Json(*residual) : Json(nullptr);
-  out["parameters"] = {{"threshold", e.params.threshold},
-                       {"max_radius_deg", e.params.max_radius_deg},
-                       {"min_share", e.params.min_share}};
+  out["parameters"] = sun_params_json(e.params);
   out["elapsed_ms"] = e.elapsed_ms;
   out["cached"] = cached;
   return out;

@@ -16,7 +16,8 @@ constexpr std::string_view kSynopsis = "info MAP|MODEL [options]";
 
 std::string help() {
   return "For a map: its size, power [r, g, b] (radiance integrated over the sphere), mean radiance,\n"
-         "largest luminance and the pixels its invalid-pixel policy changed: the metadata of\n"
+         "upper-hemisphere illuminance (Rec. 709 luminance times cos theta over z > 0), largest\n"
+         "luminance and the pixels its invalid-pixel policy changed: the metadata of\n"
          "GET /api/v1/envmaps/{id}, as JSON, without the server's `created` and `memory_bytes`; `id` and\n"
          "`name` are the file's stem.\n\n"
          "For a model (.glb, .gltf or .obj): its `format` and the description an asset's record gives\n"

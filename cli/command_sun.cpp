@@ -2,7 +2,10 @@
 // residual map written to a file.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "api/api_error.hpp"
+#include "api/light_export.hpp"
 #include "api/sun_request.hpp"
 #include "api/sun_schema.hpp"
 #include "cli/command.hpp"
@@ -11,39 +14,41 @@
 #include "cli/map_argument.hpp"
 #include "cli/output.hpp"
 #include "engine/core/limits.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "engine/image/image_io.hpp"
 
 namespace lp::cli {
-
-enum class SunFormat { Json };
-constexpr auto enum_entries(SunFormat) {
-  return std::to_array<EnumEntry<SunFormat>>({{SunFormat::Json, "json"}});
-}
 
 namespace {
 
 constexpr std::string_view kSynopsis = "sun MAP [options]";
 
-template <class T>
-std::string range_line(std::string_view option, const Range<T>& range, T fallback, std::string_view what) {
-  return option_line(option,
-                     fmt::format("{}, in [{}, {}] (default {})", what, range.min, range.max, fallback));
+// One line per parameter of engine/sun/sun_params.hpp: --min-share F for min_share.
+std::string sun_parameter_help() {
+  const SunParams d;
+  std::string out;
+  for (const SunField& f : kSunFields) {
+    std::string option = std::string("--") + f.name + " F";
+    std::replace(option.begin(), option.end(), '_', '-');
+    out += option_line(
+        option, fmt::format("{},\nin [{}, {}] (default {})", f.help, f.range.min, f.range.max, d.*f.member));
+  }
+  return out;
 }
 
 std::string help() {
-  const SunParams d = api::parse_sun_request("");
   return "The map's dominant compact emitter: its direction, angular radius, colour and irradiance, and the\n"
          "powers of the map, the residual (the map without the sun) and the sun, which add up exactly; the\n"
          "answer of POST /api/v1/envmaps/{id}/sun, with `residual` the file written or null.\n\n" +
-         range_line("--threshold F", limits::kSunThreshold, d.threshold,
-                    "core pixels' least share of the peak") +
-         range_line("--max-radius-deg A", limits::kSunMaxRadiusDeg, d.max_radius_deg,
-                    "largest sun's radius") +
-         range_line("--min-share F", limits::kSunMinShare, d.min_share, "least share of the map's power") +
+         sun_parameter_help() +
          option_line("--residual FILE",
                      "write the residual map if there is a sun\n(format from the extension: " +
                          enum_names_joined<ImageFormat>() + ")") +
-         option_line("--format NAME", choices(SunFormat::Json)) + invalid_pixel_policy_help() + output_help();
+         option_line("--format NAME", choices(api::LightFormat::Answer) +
+                                          ": the API's JSON, or the sun as a light for another tool\n"
+                                          "(as POST .../sun?format=NAME)") +
+         option_line("--frame NAME", choices(api::MitsubaFrame::Mitsuba) + ": the frame of format mitsuba") +
+         invalid_pixel_policy_help() + output_help();
 }
 
 ImageFormat residual_format(const std::string& file) {
@@ -57,7 +62,7 @@ ImageFormat residual_format(const std::string& file) {
 void run(Arguments& args) {
   args.expect_positional(1, kSynopsis);
   const InvalidPixelPolicy policy = take_invalid_pixel_policy(args);
-  args.take_enum("format", SunFormat::Json);
+  const api::LightExportQuery answer = api::parse_light_export_query(args.take_query({"format", "frame"}));
   const auto file = args.take("output");
   const auto residual_file = args.take("residual");
   const ImageFormat format = residual_file ? residual_format(*residual_file) : ImageFormat::Exr;
@@ -72,6 +77,14 @@ void run(Arguments& args) {
     written = residual_file;
   }
   Output out(file);
+  if (answer.format != api::LightFormat::Answer) {
+    const double illuminance = upper_hemisphere_illuminance(*loaded.map);
+    out.write(api::export_lights(extraction.sun ? api::sun_light_set(*extraction.sun, illuminance)
+                                                : api::no_sun_light_set(extraction.reason, illuminance),
+                                 answer.format, answer.frame));
+    out.finish();
+    return;
+  }
   out.write(api::sun_json(extraction, written, false).dump(2) + "\n");
   out.finish();
 }

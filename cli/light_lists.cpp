@@ -39,17 +39,4 @@ std::string lights_pbrt(const MedianCutResult& r) {
   return out;
 }
 
-std::string lights_mitsuba(const MedianCutResult& r) {
-  std::string out = "<scene version=\"3.0.0\">\n    <!-- " + description(r, "         ") + " -->\n";
-  for (const MedianCutLight& l : r.lights)
-    fmt::format_to(std::back_inserter(out),
-                   "    <emitter type=\"directional\">\n"
-                   "        <vector name=\"direction\" value=\"{}, {}, {}\"/>\n"
-                   "        <rgb name=\"irradiance\" value=\"{}, {}, {}\"/>\n"
-                   "    </emitter>\n",
-                   -l.direction.x, -l.direction.y, -l.direction.z, l.power[0], l.power[1], l.power[2]);
-  out += "</scene>\n";
-  return out;
-}
-
 }  // namespace lp::cli

@@ -18,8 +18,4 @@ std::string lights_csv(const MedianCutResult& result);
 // scale" 1 (pbrt-v4 normalises an RGB illuminant so that [1 1 1] has luminance 1: the values carry over).
 std::string lights_pbrt(const MedianCutResult& result);
 
-// A Mitsuba 3 scene (<scene version="3.0.0">) of `directional` emitters, to <include> from a scene:
-// "direction" is the way the light travels (away from the light), "irradiance" its power.
-std::string lights_mitsuba(const MedianCutResult& result);
-
 }  // namespace lp::cli

@@ -83,12 +83,11 @@ inline constexpr Range<int> kShBands{1, 5};
 inline constexpr Range<int> kPrefilterBaseSize{8, 2048};
 inline constexpr Range<int> kPrefilterLevels{1, 12};
 inline constexpr Range<int> kPrefilterSamples{16, 16384};
-// Sun extraction (engine/sun): a pixel joins the sun when its luminance is at least `threshold` times
-// the brightest pixel's; the sun must fit a cone of `max_radius_deg` and carry `min_share` of the map's
-// luminous power.
+// Sun extraction (engine/sun/sun_params.hpp says what each is).
 inline constexpr Range<double> kSunThreshold{0.001, 1.0};
 inline constexpr Range<double> kSunMaxRadiusDeg{0.05, 30.0};
 inline constexpr Range<double> kSunMinShare{0.0, 1.0};
+inline constexpr Range<double> kSunMinContrast{1.0, 1e6};
 // Projections of a map (engine/projection): the face size of a cube or cross, the side of an octahedral or
 // equal-area square. The answer's pixels are bounded by the largest map (--max-pixels) too.
 inline constexpr Range<int64_t> kProjectionSize{2, 8192};

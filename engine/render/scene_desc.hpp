@@ -13,6 +13,7 @@
 #include "engine/core/vec3.hpp"
 #include "engine/model/model.hpp"
 #include "engine/model/model_frame.hpp"
+#include "engine/sun/sun_params.hpp"
 
 namespace lp::render {
 
@@ -151,6 +152,7 @@ struct Lighting {
   bool visible = true;  // the camera sees the map
   // extract (with mode envmap only): the map's sun becomes a light of its own.
   SunMode sun = SunMode::None;
+  SunParams sun_parameters;  // what counts as the sun there
   // The widest importance grid (env_light.hpp): a wider map is sampled on its first coarser level
   // that fits. Not a request field: the engine's trade between sampling memory and fidelity.
   int importance_max_width = limits::kDefaultImportanceMaxWidth;

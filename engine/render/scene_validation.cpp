@@ -104,6 +104,7 @@ void Lighting::validate(const std::string& prefix) const {
   require(lights >= 1, field_path(prefix, "lights"), fmt::format("must be at least 1, got {}", lights));
   require(sun == SunMode::None || mode == LightingMode::EnvMap, field_path(prefix, "sun"),
           fmt::format("'{}' needs mode 'envmap', got mode '{}'", enum_name(sun), enum_name(mode)));
+  sun_parameters.validate(field_path(prefix, "sun_parameters"));
   require_in(field_path(prefix, "rotation_deg"), rotation_deg, kRotationDeg);
   require_in(field_path(prefix, "intensity"), intensity, kIntensity);
   require(importance_max_width >= 1, field_path(prefix, "importance_max_width"),

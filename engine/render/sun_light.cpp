@@ -56,7 +56,7 @@ bool SunLight::contains(Vec3 d) const {
 
 SunSplit split_sun(std::shared_ptr<const EnvMap> map, const Lighting& lighting) {
   if (lighting.sun == SunMode::None || !map) return {std::move(map), std::nullopt};
-  SunExtraction extraction = extract_sun(*map, SunParams{});
+  SunExtraction extraction = extract_sun(*map, lighting.sun_parameters);
   if (!extraction.sun) return {std::move(map), std::nullopt};
   return {std::move(extraction.residual), extraction.sun};
 }

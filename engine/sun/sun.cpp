@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "engine/core/constants.hpp"
 
@@ -15,6 +16,9 @@ void set_sun_power(Sun& sun, const Power& power, double map_luminance) {
     sun.irradiance[c] = power[c] * facing;
   }
   sun.share = map_luminance > 0 ? power_luminance(power, kSunLuminance) / map_luminance : 0;
+  const double sky = power_luminance(sun.fill, kSunLuminance);
+  sun.contrast =
+      sky > 0 ? power_luminance(sun.color, kSunLuminance) / sky : std::numeric_limits<double>::infinity();
 }
 
 double cone_solid_angle(double radius) {

@@ -22,15 +22,16 @@ struct Sun {
   double angular_radius = 0;  // r, the radius of a cone of solid angle Omega: 2 pi (1 - cos r) = Omega
   double removed_radius = 0;  // R: every pixel centre within R of the direction took `fill`
   int64_t removed_pixels = 0;
-  Power fill{};        // the mean radiance of the ring around the removed pixels
-  Power power{};       // the integral of its radiance over the sphere
-  Power color{};       // its mean radiance over the cone: power / Omega
-  Power irradiance{};  // on a surface facing it: power (1 + cos r) / 2, as from a uniform disc of radius r
-  double share = 0;    // the luminance of `power` over the map's
+  Power fill{};         // the mean radiance of the ring around the removed pixels
+  Power power{};        // the integral of its radiance over the sphere
+  Power color{};        // its mean radiance over the cone: power / Omega
+  Power irradiance{};   // on a surface facing it: power (1 + cos r) / 2, as from a uniform disc of radius r
+  double share = 0;     // the luminance of `power` over the map's
+  double contrast = 0;  // the luminance of `color` over `fill`'s: how much brighter than the sky around it
 };
 
-// Sets power and what follows from it (color, irradiance, share); `map_luminance` is the luminance of
-// the map's power.
+// Sets power and what follows from it (color, irradiance, share, contrast; `fill` set before);
+// `map_luminance` is the luminance of the map's power.
 void set_sun_power(Sun& sun, const Power& power, double map_luminance);
 
 // 2 pi (1 - cos r) without the cancellation of 1 - cos r near 0.

@@ -18,8 +18,10 @@ std::shared_ptr<const SunDetection> detection(const EnvMap& map, const SunParams
   return map.derived<SunDetection>("sun:" + params.key(), SunDetection::kMemoryBytes, [&] {
     hit = false;
     const auto tables = split_tables(map, kSunLuminance, SplitRule::Median);
-    const MemoryReservation scratch = map.memory_budget().reserve(
-        sun_core_scratch_bytes(map.width(), map.height()), MemoryUse::Transient, "finding the sun of a map");
+    const MemoryReservation scratch =
+        map.memory_budget().reserve(sun_core_scratch_bytes(map.width(), map.height()) +
+                                        sun_detection_scratch_bytes(map.width(), map.height()),
+                                    MemoryUse::Transient, "finding the sun of a map");
     return std::make_shared<const SunDetection>(detect_sun(map.image(), *tables.weight, params));
   });
 }

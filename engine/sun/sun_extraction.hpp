@@ -1,17 +1,22 @@
 #pragma once
 // The dominant compact emitter of a map (its sun) taken out as a light of its own, and the map without
 // it (the residual):
-// 1. Search: the median-cut weight table (luminance * solid angle, engine/mediancut) locates the window
-//    of the largest sun's size (2 max_radius_deg) holding the most energy, and its brightest pixel.
-// 2. Core: the pixels connected to that peak of at least `threshold` times its luminance. None (a
-//    constant or overcast map) if they spread over more than a cone of `max_radius_deg`.
+// 1. Search by radiance: the brightest pixels of the map are the candidates, brightest first (a sun is
+//    the brightest thing in the sky however little of the map's power it carries).
+// 2. Core: the pixels connected to a candidate peak of at least `threshold` times its luminance. Not a
+//    sun (an overcast sky, a big window, a smooth map) if they spread over more than a cone of
+//    `max_radius_deg`.
 // 3. The sun's direction is the core's energy centroid; its solid angle Omega the core's, and its
 //    angular radius r that of the cone of that solid angle, 2 pi (1 - cos r) = Omega.
 // 4. Removal: every pixel whose centre lies within R of the direction (R = the farthest core pixel
 //    centre's angle + 1.5 pixels) takes the solid-angle-weighted mean radiance of the ring from R to
 //    R + max(2 pixels, R / 2) around it: that is the residual map.
-// 5. The sun's power is the map's power minus the residual's, so the two add up to the map's exactly.
-//    None if its luminance is under `min_share` of the map's.
+// 5. Compactness and brightness: not a sun if its mean luminance over its cone (its power above the
+//    ring's radiance, over Omega) is under `min_contrast` times the ring's, its luminance under
+//    `min_share` of the map's, or its peak not kSunPeakOverElsewhere times any pixel outside the disc. The
+//    next brightest pixel outside the cores tried so far is tried then, up to kSunCandidates spots
+//    (sun_detection.hpp).
+// 6. The sun's power is the map's power minus the residual's, so the two add up to the map's exactly.
 // A light of the sun's power spread evenly over the cone of radius r about its direction, added to the
 // residual, lights a scene as the map does.
 #include <memory>

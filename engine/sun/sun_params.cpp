@@ -6,14 +6,15 @@
 
 namespace lp {
 
-void SunParams::validate() const {
-  require_in("threshold", threshold, limits::kSunThreshold);
-  require_in("max_radius_deg", max_radius_deg, limits::kSunMaxRadiusDeg);
-  require_in("min_share", min_share, limits::kSunMinShare);
+void SunParams::validate(const std::string& prefix) const {
+  for (const SunField& f : kSunFields) require_in(field_path(prefix, f.name), this->*f.member, f.range);
 }
 
 std::string SunParams::key() const {
-  return fmt::format("threshold={};max_radius_deg={};min_share={}", threshold, max_radius_deg, min_share);
+  std::string out;
+  for (const SunField& f : kSunFields)
+    out += fmt::format("{}{}={}", out.empty() ? "" : ";", f.name, this->*f.member);
+  return out;
 }
 
 }  // namespace lp

@@ -1,11 +1,12 @@
 #pragma once
-// Where a map's sun is, found on the median-cut weight table (luminance * pixel solid angle): the
-// square window of `window` pixels (about the largest sun's diameter) that holds the most energy, then
-// the brightest pixel in and around it. A few lookups per window, so the whole map is searched in
-// O(W H / window^2); windows overlap by half and wrap around in longitude.
+// Where a map's sun may be: its brightest pixels by radiance. A sun is the brightest thing in the sky
+// however little of the map's power it carries, so the candidates are the `count` brightest pixels,
+// brightest first; the detection (sun_detection.hpp) grows each into a core and keeps the first that is
+// small and far brighter than its surroundings. One pass over the map, a heap of `count` entries.
+#include <vector>
+
 #include "engine/envmap/luminance.hpp"
 #include "engine/image/image.hpp"
-#include "engine/mediancut/summed_area_table.hpp"
 
 namespace lp {
 
@@ -13,8 +14,7 @@ struct PixelPos {
   int x = 0, y = 0;
 };
 
-// `weight` is the table of `image` in luminance `mode`; window >= 1. The same answer whatever the
-// thread count (ties go to the first window and pixel in row-major order).
-PixelPos brightest_spot(const Image& image, const SummedAreaTable& weight, LuminanceMode mode, int window);
+// Brightest first; ties go to the first pixel in row-major order. count >= 1.
+std::vector<PixelPos> brightest_pixels(const Image& image, LuminanceMode mode, int count);
 
 }  // namespace lp

@@ -2,8 +2,10 @@
 // Results are cached per (map, parameters) on the map, so a repeat request costs only the encoding.
 #include <chrono>
 
+#include "api/light_export.hpp"
 #include "api/median_cut_request.hpp"
 #include "api/median_cut_schema.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "engine/mediancut/median_cut_plot.hpp"
 #include "server/http/reserved_content.hpp"
 #include "server/routes/routes.hpp"
@@ -14,10 +16,17 @@ namespace {
 void median_cut(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto start = std::chrono::steady_clock::now();
   const auto entry = app.envmaps.get(path_param(req, 1));
+  const api::LightExportQuery format = api::parse_light_export_query(req.params);
   const MedianCutParams params = api::parse_median_cut_request(req.body, app.options.limits);
   api::check_count_fits(params, entry->map->image().pixel_count());
   bool cached = false;
   const auto result = median_cut_cached(*entry->map, params, &cached);
+  if (format.format != api::LightFormat::Answer) {
+    const api::LightSet set = api::median_cut_light_set(*result, upper_hemisphere_illuminance(*entry->map));
+    res.set_content(api::export_lights(set, format.format, format.frame),
+                    api::light_format_content_type(format.format));
+    return;
+  }
   const double elapsed =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   res.set_content(api::median_cut_json(*result, elapsed, cached), "application/json");

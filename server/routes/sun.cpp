@@ -3,8 +3,10 @@
 // with sun "extract" share the same residual. The residual map is not kept across restarts.
 #include "api/api_error.hpp"
 #include "api/excerpt.hpp"
+#include "api/light_export.hpp"
 #include "api/sun_request.hpp"
 #include "api/sun_schema.hpp"
+#include "engine/envmap/illuminance.hpp"
 #include "server/routes/routes.hpp"
 #include "server/storage/resource_name.hpp"
 
@@ -45,9 +47,18 @@ std::string register_residual(App& app, const EnvMapEntry& from,
 
 void sun(App& app, const httplib::Request& req, httplib::Response& res) {
   const auto entry = app.envmaps.get(path_param(req, 1));
+  const api::LightExportQuery format = api::parse_light_export_query(req.params);
   const SunParams params = api::parse_sun_request(req.body);
   bool cached = false;
   const SunExtraction extraction = extract_sun(*entry->map, params, &cached);
+  if (format.format != api::LightFormat::Answer) {
+    const double illuminance = upper_hemisphere_illuminance(*entry->map);
+    const api::LightSet set = extraction.sun ? api::sun_light_set(*extraction.sun, illuminance)
+                                             : api::no_sun_light_set(extraction.reason, illuminance);
+    res.set_content(api::export_lights(set, format.format, format.frame),
+                    api::light_format_content_type(format.format));
+    return;
+  }
   std::optional<std::string> residual;
   if (extraction.sun) residual = register_residual(app, *entry, extraction.residual);
   send_json(res, api::sun_json(extraction, residual, cached));

@@ -46,8 +46,9 @@ TEST(CliInfo, FiguresAreTheEnginesForEveryRealMap) {
 TEST(CliInfo, MatchesTheServersMetadataOfTheSameMap) {
   const json cli = info(test::envmap_path("studio.hdr").string());
   const json api = test::reply(test::shared_server().client()->Get("/api/v1/envmaps/studio_hdr")).body_json();
-  for (const char* key : {"width", "height", "format", "power", "mean_radiance", "max_luminance",
-                          "clamped_negative_values", "most_negative_value", "non_finite_pixels"})
+  for (const char* key :
+       {"width", "height", "format", "power", "mean_radiance", "illuminance", "max_luminance",
+        "clamped_negative_values", "most_negative_value", "non_finite_pixels"})
     EXPECT_EQ(cli[key], api[key]) << key;
   EXPECT_EQ(cli["name"], "studio");
   EXPECT_FALSE(cli.contains("created"));

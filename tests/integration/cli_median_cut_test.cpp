@@ -67,7 +67,7 @@ std::vector<Light> pbrt_lights(const std::string& text) {
 // <rgb name="irradiance">.
 std::vector<Light> mitsuba_lights(const std::string& text) {
   const std::regex emitter(
-      R"re(<emitter type="directional">\s*<vector name="direction" value="([^"]*)"/>\s*<rgb name="irradiance" value="([^"]*)"/>\s*</emitter>)re");
+      R"re(<emitter type="directional" id="[^"]*">\s*<vector name="direction" value="([^"]*)"/>\s*<rgb name="irradiance" value="([^"]*)"/>\s*</emitter>)re");
   std::vector<Light> lights;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), emitter); it != std::sregex_iterator();
        ++it) {
@@ -124,7 +124,7 @@ TEST(CliMedianCut, PbrtAndMitsubaListsReadBackToTheSameLights) {
   EXPECT_EQ(count(pbrt, "AttributeEnd\n"), 1u);
   expect_same_lights(pbrt_lights(pbrt), lights, map);
 
-  const std::string mitsuba = median_cut({"--count", "64", "--format", "mitsuba"});
+  const std::string mitsuba = median_cut({"--count", "64", "--format", "mitsuba", "--frame", "world"});
   EXPECT_EQ(mitsuba.rfind("<scene version=\"3.0.0\">\n", 0), 0u);
   EXPECT_TRUE(mitsuba.ends_with("</scene>\n"));
   EXPECT_EQ(count(mitsuba, "<scene"), 1u);

@@ -84,14 +84,22 @@ TEST(EnvMapApi, UploadsOfEveryFormatGiveTheSameMetadataAsTheEngine) {
     EXPECT_EQ(m["width"], test::kRealMapWidth);
     EXPECT_EQ(m["height"], test::kRealMapHeight);
     // power = sum of L * exact pixel solid angle, computed here independently.
+    // illuminance = sum over the upper rows of Rec. 709 luminance * the integral of cos theta dOmega
+    // over the pixel, (dphi / 2) (cos^2 theta_0 - cos^2 theta_1).
     const Image img = read_image_file(test::envmap_path(file)).image;
-    double power_r = 0;
+    double power_r = 0, illuminance = 0;
     for (int y = 0; y < img.height(); ++y) {
-      const double omega = (2 * M_PI / img.width()) *
-                           (std::cos(M_PI * y / img.height()) - std::cos(M_PI * (y + 1) / img.height()));
-      for (int x = 0; x < img.width(); ++x) power_r += img.at(x, y).x * omega;
+      const double c0 = std::cos(M_PI * y / img.height()), c1 = std::cos(M_PI * (y + 1) / img.height());
+      const double omega = (2 * M_PI / img.width()) * (c0 - c1);
+      const double projected = 2 * y < img.height() ? (M_PI / img.width()) * (c0 * c0 - c1 * c1) : 0.0;
+      for (int x = 0; x < img.width(); ++x) {
+        const Rgb v = img.at(x, y);
+        power_r += v.x * omega;
+        illuminance += (0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z) * projected;
+      }
     }
     EXPECT_NEAR(m["power"][0].get<double>(), power_r, 1e-5 * power_r) << file;
+    EXPECT_NEAR(m["illuminance"].get<double>(), illuminance, 1e-9 * illuminance) << file;
     EXPECT_NEAR(m["mean_radiance"][0].get<double>(), power_r / (4 * M_PI), 1e-5 * power_r) << file;
     EXPECT_EQ(c->Delete(("/api/v1/envmaps/" + name).c_str())->status, 204);
     EXPECT_EQ(c->Get(("/api/v1/envmaps/" + name).c_str())->status, 404);

@@ -504,6 +504,10 @@ TEST(RenderQueue, FinishedJobsAreBoundedAndTheOldestDropped) {
     ids.push_back(submit(s, render_body("default", 16, 16, 1)));
     EXPECT_EQ(wait_finished(s, ids.back())["status"], "done");
   }
+  // A job says done as its work ends; its runner retires it (and drops the oldest) just after.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (get(s, "/api/v1/renders/" + ids[0]).status != 404 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   EXPECT_EQ(get(s, "/api/v1/renders/" + ids[0]).status, 404);
   std::vector<std::string> listed;
   const json all = get(s, "/api/v1/renders").body_json();

@@ -12,6 +12,7 @@
 #include "engine/envmap/latlong.hpp"
 #include "engine/image/image.hpp"
 #include "engine/sh/sh_image.hpp"
+#include "engine/sun/cone_pixels.hpp"
 #include "support/real_maps.hpp"
 
 namespace lp {
@@ -171,6 +172,51 @@ TEST(ShProjection, TheReconstructionImageIsTheEvaluation) {
   const Vec3 d = latlong::direction({3.5f / 16, 5.5f / 8});
   EXPECT_NEAR(image.at(3, 5).x, 1 + d.z, 1e-3);
   EXPECT_NEAR(image.at(3, 5).z, 1 - d.x, 1e-3);
+}
+
+}  // namespace
+}  // namespace lp
+
+namespace lp {
+namespace {
+
+// The integral of every Y_lm over pixel (x, y) of a w x h grid by a 400 x 400 midpoint rule in theta
+// and phi (within 1e-7 of the pixel's solid angle for these bands).
+ShBasis pixel_integrals(int x, int y, int w, int h, int bands) {
+  constexpr int kSteps = 400;
+  const double t0 = kPi * y / h, dt = kPi / h / kSteps, p0 = 2 * kPi * x / w, dp = 2 * kPi / w / kSteps;
+  ShBasis sum{};
+  for (int i = 0; i < kSteps; ++i) {
+    const double t = t0 + (i + 0.5) * dt;
+    for (int j = 0; j < kSteps; ++j) {
+      const double p = p0 + (j + 0.5) * dp;
+      const ShBasis b = sh_basis(bands, std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+      for (size_t k = 0; k < b.size(); ++k) sum[k] += b[k] * std::sin(t) * dt * dp;
+    }
+  }
+  return sum;
+}
+
+// What convention.quadrature states: a lit pixel projects onto the integral of Y_lm over its area, not
+// onto Y_lm at its centre times its solid angle (which differs by about 1e-2 on pixels this coarse).
+TEST(ShProjection, APixelProjectsOntoTheIntegralOfTheBasisOverItsArea) {
+  const int w = 16, h = 8, bands = kMaxShBands;
+  for (const auto& [x, y] : {std::pair{3, 2}, {11, 0}, {6, 5}}) {
+    Image image(w, h);
+    image.set(x, y, Rgb{1, 1, 1});
+    const ShCoefficients c = project_sh(image, bands);
+    const ShBasis exact = pixel_integrals(x, y, w, h, bands);
+    const Direction d = pixel_centre_direction(x, y, w, h);
+    const ShBasis centre = sh_basis(bands, d[0], d[1], d[2]);
+    const double omega = latlong::pixel_solid_angle(y, w, h);
+    double centre_error = 0;
+    for (int i = 0; i < sh_coefficient_count(bands); ++i) {
+      EXPECT_NEAR(c.rgb[size_t(i)][0], exact[size_t(i)], 1e-6 * omega)
+          << "pixel " << x << "," << y << " i " << i;
+      centre_error = std::max(centre_error, std::abs(centre[size_t(i)] * omega - exact[size_t(i)]) / omega);
+    }
+    EXPECT_GT(centre_error, 1e-3) << "pixel " << x << "," << y;
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "engine/core/constants.hpp"
 #include "support/real_maps.hpp"
@@ -19,14 +20,15 @@ namespace {
 
 using test::AddedSun;
 
-// Direction within one pixel (its height), power within 1% per channel, and the sums exact.
-void expect_found(const SunExtraction& e, const AddedSun& added, int height, const std::string& what) {
+// Direction within one pixel (its height), power within `power_tolerance` per channel, and the sums exact.
+void expect_found(const SunExtraction& e, const AddedSun& added, int height, const std::string& what,
+                  double power_tolerance = 0.01) {
   ASSERT_TRUE(e.sun) << what << ": " << e.reason;
   const Sun& sun = *e.sun;
   const double pixel = kPi / height;
   EXPECT_LT(angle_between(sun.axis, added.axis), pixel) << what;
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(sun.power[c] / added.power[c], 1.0, 0.01) << what << " channel " << c;
+    EXPECT_NEAR(sun.power[c] / added.power[c], 1.0, power_tolerance) << what << " channel " << c;
     EXPECT_EQ(e.residual_power[c] + sun.power[c], e.map_power[c]) << what << " channel " << c;
   }
   std::printf("%s: off by %.3f pixels, power %.5f of the added, radius %.3f deg (added %.3f), share %.3f\n",
@@ -53,6 +55,84 @@ TEST(SunExtraction, FindsASunAddedToASmoothSky) {
   }
 }
 
+// A low sun a person plainly sees that carries only 2% of the map's power: found by its radiance and
+// compactness, in the right direction and of the right size.
+TEST(SunExtraction, FindsALowSunOfTwoPercentOfThePower) {
+  struct Case {
+    double theta_deg, phi_deg, radius_deg;
+  };
+  const Case cases[] = {{86, 215, 1.0}, {80, 30, 0.5}, {88, 359.8, 1.5}};
+  for (const Case& c : cases) {
+    Image image = test::latlong_image(1024, test::smooth_sky);
+    const Rgb sky = EnvMap::power_of(image);
+    const Rgb tint{1.0f, 0.7f, 0.4f};  // luminance (R + G + B) / 3 = 0.7
+    const double omega = cone_solid_angle(c.radius_deg * kPi / 180);
+    // 2% of the luminous power of sky and sun together: sun = 0.02 / 0.98 sky.
+    const double sky_luminance = (sky.x + sky.y + sky.z) / 3;
+    const AddedSun added = test::add_sun(image, c.theta_deg, c.phi_deg, c.radius_deg,
+                                         tint * float(0.02 / 0.98 * sky_luminance / omega / 0.7));
+    const EnvMap map(std::move(image));
+    const SunExtraction e = extract_sun(map, SunParams{});
+    const std::string what = fmt::format("theta {} phi {} radius {}", c.theta_deg, c.phi_deg, c.radius_deg);
+    // Power within 2%: at the horizon the ring's mean misjudges the steep sky under the disc by about
+    // 0.03% of the map's power, which is 1.5% of a sun this faint.
+    expect_found(e, added, map.height(), what, 0.02);
+    if (!e.sun) continue;
+    EXPECT_NEAR(e.sun->share, 0.02, 0.002) << what;
+    // The core's solid angle is the disc's pixels': its radius within half a pixel of the disc's.
+    EXPECT_NEAR(e.sun->angular_radius * 180 / kPi, c.radius_deg, 0.5 * 180.0 / map.height()) << what;
+  }
+}
+
+// Bright regions that are no sun: an overcast sky brightest at the zenith, an overcast sky with the glow
+// of a sun behind the clouds (bright, but spread over tens of degrees), and a room lit by a big window.
+TEST(SunExtraction, NoSunInAnOvercastSkyOrABigWindow) {
+  const Direction glow_axis = pixel_centre_direction(300, 180, 1024, 512);
+  const auto overcast = [](Vec3 d) {
+    return d.z < 0 ? Rgb{0.2f, 0.2f, 0.2f} : Rgb{1, 1, 1} * (1 + 2 * d.z) / 3;
+  };
+  const auto glow = [&](Vec3 d) {
+    const double a = angle_between({d.x, d.y, d.z}, glow_axis) * 180 / kPi;
+    return overcast(d) + Rgb{1, 1, 1} * float(20 * std::exp(-a * a / (2 * 8 * 8)));
+  };
+  // A window 30 degrees wide and tall at the horizon, 100 times as bright as the walls.
+  const auto room = [](Vec3 d) {
+    const double theta = std::acos(d.z) * 180 / kPi, phi = std::atan2(d.y, d.x) * 180 / kPi;
+    const bool window = theta > 60 && theta < 90 && phi > 80 && phi < 110;
+    return window ? Rgb{20, 21, 22} : Rgb{0.2f, 0.19f, 0.18f};
+  };
+  const std::pair<const char*, std::function<Rgb(Vec3)>> maps[] = {
+      {"overcast", overcast}, {"glow", glow}, {"window", room}};
+  for (const auto& [name, f] : maps) {
+    const EnvMap map(test::latlong_image(1024, f));
+    const SunExtraction e = extract_sun(map, SunParams{});
+    EXPECT_FALSE(e.sun) << name << ": found a sun of share " << (e.sun ? e.sun->share : 0);
+    std::printf("%s: %s\n", name, e.reason.c_str());
+  }
+}
+
+// A faint disc (its core the disc alone at threshold 0.5) under min_contrast or under min_share is no
+// sun; lowering min_contrast finds it, raising min_share loses it again.
+TEST(SunExtraction, TheThresholdsDecide) {
+  Image image = test::latlong_image(512, test::smooth_sky);
+  test::add_sun(image, 70, 100, 4, Rgb{5, 5, 5});  // about 7 times the sky around it, 1% of the power
+  const EnvMap map(std::move(image));
+  SunParams base;
+  base.threshold = 0.5;
+  const SunExtraction under = extract_sun(map, base);
+  EXPECT_FALSE(under.sun);
+  EXPECT_NE(under.reason.find("min_contrast"), std::string::npos) << under.reason;
+  SunParams lenient = base;
+  lenient.min_contrast = 3;
+  const SunExtraction e = extract_sun(map, lenient);
+  ASSERT_TRUE(e.sun) << e.reason;
+  EXPECT_GT(e.sun->contrast, 3);
+  EXPECT_LT(e.sun->contrast, base.min_contrast);
+  SunParams strict = lenient;
+  strict.min_share = 2 * e.sun->share;
+  EXPECT_FALSE(extract_sun(map, strict).sun);
+}
+
 TEST(SunExtraction, NoSunInAConstantSmoothOrBlackMap) {
   const EnvMap constant(test::latlong_image(128, [](Vec3) { return Rgb{1, 1, 1}; }));
   const EnvMap smooth(test::latlong_image(256, test::smooth_sky));
@@ -67,10 +147,11 @@ TEST(SunExtraction, NoSunInAConstantSmoothOrBlackMap) {
   }
 }
 
-TEST(SunExtraction, FindsASunAddedToEveryRealMap) {
-  // A sun of 3 degrees (about 2 pixels of 1.4 degrees) with twice the map's power, away from the suns
-  // of city, forest and sunrise (near phi 215 degrees).
+TEST(SunExtraction, FindsASunAddedToEveryRealMapWithoutOne) {
+  // A sun of 3 degrees (about 2 pixels of 1.4 degrees) with twice the map's power. Not to city, forest
+  // or sunrise: a sky has one sun, and of two the detection takes neither (kSunPeakOverElsewhere).
   for (const auto& file : test::real_envmap_files()) {
+    if (extract_sun(*test::real_map(file), SunParams{}).sun) continue;
     Image image = test::real_map(file)->image();
     const double map_power = EnvMap::power_of(image).x;
     const float radiance = float(2 * map_power / cone_solid_angle(3 * kPi / 180));

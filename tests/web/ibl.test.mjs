@@ -156,7 +156,8 @@ test('a map without a sun says so, with the API\'s reason, and shows no marker',
   await page.locator('#sun-figures[data-found=false]').waitFor();
   const sun = await (await fetch(`${server.base}/api/v1/envmaps/overcast/sun`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{}' })).json();
   assert.equal(sun.found, false);
-  assert.equal(await page.locator('#sun-figures').innerText(), `sun\nnone in this map: ${sun.reason}`);
+  assert.equal(await page.locator('#sun-figures').innerText(),
+    `sun\nnone in this map: ${sun.reason}\nsun parameters\nthreshold ${shown(sun.parameters.min_contrast)} times the sky around it, least share ${shown(sun.parameters.min_share)}`);
   assert.ok(await page.locator('#sun-marker').isHidden());
   assert.ok(await page.locator('#maps-panel .error').isHidden());
 });
@@ -193,4 +194,35 @@ test('the IBL panel in a screenshot, its strip of a six-level chain', async () =
   await waitForImage(page, '#prefilter-strip figure[data-level="5"] img', 4);
   await elementScreenshot(page, '#ibl-panel', 'ibl-panel');
   assert.deepEqual(browser.errors, []);
+});
+
+test('the sun threshold is the API\'s, and the one set decides whether the sun is found', async () => {
+  const fields = (await apiDocument()).components.schemas.SunParameters.properties;
+  const input = page.locator('#sun-form [name=min_contrast]');
+  await page.waitForFunction(() => document.querySelector('#sun-form [name=min_contrast]').value !== '');
+  const [value, min, max] = await input.evaluate((i) => [i.value, i.min, i.max]);
+  const want = fields.min_contrast;
+  assert.deepEqual([value, min, max], [want.default, want.minimum, want.maximum].map(String));
+
+  await upload('sunny_threshold', latlongPfm(mapWidth, sunnySky));
+  await selectMap('sunny_threshold');
+  const post = async (body) => (await fetch(`${server.base}/api/v1/envmaps/sunny_threshold/sun`,
+    { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) })).json();
+  const sun = await post({});
+  assert.equal(sun.found, true);
+
+  // Above the sun's contrast: none, and the figures say why and with which threshold.
+  const high = 10 ** Math.ceil(Math.log10(sun.contrast * 2));
+  await input.fill(String(high));
+  await page.locator('#sun-find').click();
+  await page.locator('#sun-figures[data-found=false]').waitFor();
+  const figures = await page.locator('#sun-figures').innerText();
+  assert.match(figures, /min_contrast/);
+  assert.match(figures, new RegExp(`threshold ${shown(high)} times`));
+  assert.equal((await post({ min_contrast: high })).cached, true, 'the page asked with it');
+  // Under it: found again.
+  await input.fill(String(Math.floor(sun.contrast / 2)));
+  await page.locator('#sun-find').click();
+  await page.locator('#sun-figures[data-found=true]').waitFor();
+  await screenshot(page, 'sun-threshold');
 });

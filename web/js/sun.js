@@ -1,11 +1,13 @@
 // The sun of the selected map (POST /envmaps/{id}/sun): a marker over the lat-long map where it lies,
 // as large as its cone, with its figures beside the map; or why the map has none.
 import { api } from './api.js';
+import { apiDocument, applyFields, componentFields } from './openapi.js';
 import { $, el, num, rgb, busy } from './dom.js';
 import { state, on } from './state.js';
 import { refreshMaps } from './maps.js';
 
 const panel = () => $('#maps-panel');
+const form = () => $('#sun-form');
 const deg = (rad) => (rad * 180) / Math.PI;
 
 // Where a direction lies on a lat-long image, as fractions of its width and height: u = phi / 2 pi,
@@ -37,6 +39,7 @@ function showFigures(sun) {
     ['share of power', `${num(100 * sun.share, 3)} %`],
     ['residual map', sun.residual],
   ] : [['sun', `none in this map: ${sun.reason}`]];
+  items.push(['sun parameters', `threshold ${num(sun.parameters.min_contrast)} times the sky around it, least share ${num(sun.parameters.min_share)}`]);
   figures.replaceChildren(...items.flatMap(([k, v]) => [el('dt', {}, k), el('dd', {}, v)]));
   figures.hidden = false;
 }
@@ -50,7 +53,13 @@ function clear() {
 async function findSun() {
   const id = state.map;
   if (!id) return;
-  const sun = await busy(panel(), () => api(`/envmaps/${encodeURIComponent(id)}/sun`, { method: 'POST', json: {} }));
+  // The threshold and least share the form holds (the API's defaults and ranges, from its document).
+  const json = {};
+  for (const name of ['min_contrast', 'min_share']) {
+    const value = form().elements.namedItem(name).value;
+    if (value !== '') json[name] = Number(value);
+  }
+  const sun = await busy(panel(), () => api(`/envmaps/${encodeURIComponent(id)}/sun`, { method: 'POST', json }));
   if (!sun || id !== state.map) return;
   showFigures(sun);
   $('#sun-marker').hidden = !sun.found;
@@ -59,7 +68,9 @@ async function findSun() {
   await refreshMaps(); // the residual map is listed beside the others
 }
 
-export function initSun() {
+export async function initSun() {
   $('#sun-find').addEventListener('click', findSun);
+  form().addEventListener('submit', (event) => { event.preventDefault(); findSun(); });
+  applyFields(form(), componentFields(await apiDocument(), 'SunParameters'));
   on('map', clear);
 }
