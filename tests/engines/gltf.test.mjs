@@ -25,4 +25,25 @@ test('the gltf target passes the Khronos glTF validator', async () => {
   // Every file the glTF names was read by the validator.
   const uris = report.info.resources.map((r) => r.uri).sort();
   assert.ok(uris.includes(manifest.files.find((f) => f.endsWith('.ktx2'))), JSON.stringify(report.info.resources));
+  // EXT_lights_image_based's faces: 6 RGBA PNGs per level of the 16-texel cube (16 down to 1), each read and
+  // decoded by the validator at its level's size.
+  const gltf = JSON.parse(readFileSync(path.join(out, gltfFile), 'utf8'));
+  assert.ok(gltf.extensionsUsed.includes('EXT_lights_image_based'));
+  const light = gltf.extensions.EXT_lights_image_based.lights[gltf.scenes[0].extensions.EXT_lights_image_based.light];
+  assert.equal(light.specularImageSize, 16);
+  assert.equal(light.specularImages.length, 5);
+  assert.equal(light.irradianceCoefficients.length, 9);
+  light.specularImages.forEach((faces, level) => {
+    assert.equal(faces.length, 6);
+    for (const index of faces) {
+      const { uri } = gltf.images[index];
+      const resource = report.info.resources.find((r) => r.uri === uri);
+      assert.ok(resource, `${uri} was not read`);
+      assert.equal(resource.mimeType, 'image/png');
+      assert.equal(resource.image.format, 'rgba', JSON.stringify(resource));
+      assert.equal(resource.image.width, 16 >> level);
+      assert.equal(resource.image.height, 16 >> level);
+      assert.ok(manifest.files.includes(uri));
+    }
+  });
 });

@@ -1,17 +1,22 @@
 // `lightprobe bake --target gltf`, the real tool: the KTX2 cube read back holds the engine's own chain of
 // the map (a cube of the full pyramid, level i at roughness i / (levels - 1)), the sky on glTF's +Y face,
-// and the glTF's irradiance coefficients reconstruct the engine's irradiance of the map in glTF's frame.
+// and the glTF's irradiance coefficients reconstruct the engine's irradiance of the map in glTF's frame;
+// EXT_lights_image_based's RGBD PNG faces are that cube in Babylon.js's frame and its coefficients
+// Babylon.js's irradiance harmonics.
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 
 #include "engine/envmap/envmap.hpp"
 #include "engine/envmap/illuminance.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/image/ktx2.hpp"
+#include "engine/image/rgbd.hpp"
 #include "engine/prefilter/prefilter_chain.hpp"
 #include "engine/sh/sh_basis.hpp"
 #include "engine/sh/sh_projection.hpp"
@@ -30,6 +35,22 @@ std::string read_text(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+Ktx2Texture read_cube(const fs::path& file) {
+  const std::string bytes = read_text(file);
+  return read_ktx2({reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()}, {});
+}
+
+Image read_rgbd_png(const fs::path& file) {
+  const std::string bytes = read_text(file);
+  int w = 0, h = 0, channels = 0;
+  uint8_t* pixels = stbi_load_from_memory(reinterpret_cast<const uint8_t*>(bytes.data()), int(bytes.size()),
+                                          &w, &h, &channels, 4);
+  if (!pixels || channels != 4) return Image(0, 0);
+  Image image = decode_rgbd_pixels(std::span<const uint8_t>(pixels, size_t(w) * size_t(h) * 4), w, h);
+  stbi_image_free(pixels);
+  return image;
 }
 
 class CliBakeGltf : public ::testing::Test {
@@ -129,6 +150,77 @@ TEST_F(CliBakeGltf, TheIrradianceCoefficientsAreTheEnginesInGltfsFrame) {
   for (const auto& e : dirs) {
     const ShRgb want = world.evaluate(e[0], -e[2], e[1]), got = gltf.evaluate(e[0], e[1], e[2]);
     for (size_t ch = 0; ch < 3; ++ch) EXPECT_NEAR(got[ch], want[ch], 1e-9 * std::abs(want[ch]) + 1e-12);
+  }
+}
+
+// specularImages[level][face] is the KTX2 cube's level in Babylon.js's frame (glTF with x mirrored): its
+// +X and -X faces are the KTX2's -X and +X, every face turned by 180 degrees; to RGBD's 8 bits: a channel
+// is (c / 255)^2.2 / D with c rounded, so it is off by at most 2.2 (0.5 / 255) / D, D about 1 / the
+// brightest channel (1 below 1). Texels above RGBD's range (the sun) saturate and are not compared.
+TEST_F(CliBakeGltf, TheImageBasedFacesAreTheCubeInRgbd) {
+  const json gltf = read_json("sunrise.gltf");
+  EXPECT_EQ(gltf["extensionsUsed"][1], "EXT_lights_image_based");
+  EXPECT_EQ(gltf["scenes"][0]["extensions"]["EXT_lights_image_based"]["light"], 0);
+  const json& light = gltf["extensions"]["EXT_lights_image_based"]["lights"][0];
+  EXPECT_EQ(light["specularImageSize"], 16);
+  EXPECT_EQ(light["intensity"], 1.0);
+  const Ktx2Texture t = read_cube(file("sunrise_radiance.ktx2"));
+  ASSERT_EQ(light["specularImages"].size(), t.levels.size());
+  int compared = 0, saturated = 0;
+  for (size_t i = 0; i < t.levels.size(); ++i) {
+    const int size = 16 >> i;
+    ASSERT_EQ(light["specularImages"][i].size(), 6u);
+    for (int face = 0; face < 6; ++face) {
+      const json& image = gltf["images"][light["specularImages"][i][size_t(face)].get<size_t>()];
+      EXPECT_EQ(image["mimeType"], "image/png");
+      const Image png = read_rgbd_png(file(image["uri"]));
+      ASSERT_EQ(png.width(), size) << image["uri"];
+      ASSERT_EQ(png.height(), size) << image["uri"];
+      const int ktx_face = face == 0 ? 1 : face == 1 ? 0 : face;
+      for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+          const float* want = &t.levels[i].row(ktx_face * size + size - 1 - y)[3 * (size - 1 - x)];
+          const float brightest = std::max({want[0], want[1], want[2]});
+          if (brightest > 0.99f * kRgbdMaxRange) {
+            ++saturated;
+            continue;
+          }
+          ++compared;
+          const float step = 2.2f * 0.5f / 255 * std::max(1.0f, brightest) * 1.01f;
+          for (int c = 0; c < 3; ++c)
+            ASSERT_NEAR(png.row(y)[3 * x + c], want[c], step + 1e-3f * want[c])
+                << "level " << i << " face " << face << " texel " << x << ", " << y;
+        }
+    }
+  }
+  EXPECT_EQ(compared + saturated, 6 * (256 + 64 + 16 + 4 + 1));
+  EXPECT_LT(saturated, compared / 100) << saturated << " saturated texels";
+}
+
+// irradianceCoefficients are Babylon.js's SphericalHarmonics of the irradiance: evaluated with its basis
+// (its SH3ylmBasisConstants, Condon-Shortley signs, on the terms 1, y, z, x, xy, yz, 3z^2 - 1, xz,
+// x^2 - y^2) at Babylon's direction (-x, z, -y) of a world direction (x, y, z), they give the engine's
+// irradiance there.
+TEST_F(CliBakeGltf, TheImageBasedCoefficientsAreBabylonsIrradiance) {
+  const json gltf = read_json("sunrise.gltf");
+  const json& c = gltf["extensions"]["EXT_lights_image_based"]["lights"][0]["irradianceCoefficients"];
+  ASSERT_EQ(c.size(), 9u);
+  const double pi = std::numbers::pi;
+  const double k[9] = {std::sqrt(1 / (4 * pi)),  -std::sqrt(3 / (4 * pi)),  std::sqrt(3 / (4 * pi)),
+                       -std::sqrt(3 / (4 * pi)), std::sqrt(15 / (4 * pi)),  -std::sqrt(15 / (4 * pi)),
+                       std::sqrt(5 / (16 * pi)), -std::sqrt(15 / (4 * pi)), std::sqrt(15 / (16 * pi))};
+  const ShCoefficients world = sh_irradiance(project_sh(map().image(), 3));
+  const double dirs[][3] = {{0, 0, 1}, {0, 0, -1},         {1, 0, 0},
+                            {0, 1, 0}, {0.6, 0.48, -0.64}, {-0.36, 0.48, 0.8}};
+  for (const auto& w : dirs) {
+    const double x = -w[0], y = w[2], z = -w[1];
+    const double terms[9] = {1, y, z, x, x * y, y * z, 3 * z * z - 1, x * z, x * x - y * y};
+    const ShRgb want = world.evaluate(w[0], w[1], w[2]);
+    for (size_t ch = 0; ch < 3; ++ch) {
+      double got = 0;
+      for (size_t j = 0; j < 9; ++j) got += c[j][ch].get<double>() * k[j] * terms[j];
+      EXPECT_NEAR(got, want[ch], 1e-9 * std::abs(want[ch]) + 1e-12) << "channel " << ch;
+    }
   }
 }
 

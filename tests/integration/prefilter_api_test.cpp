@@ -327,8 +327,15 @@ TEST(PrefilterApi, ATargetsJobServesTheTargetsFiles) {
   EXPECT_DOUBLE_EQ(st["level_info"][4]["roughness"].get<double>(), 1.0);
   std::vector<std::string> names;
   for (const json& f : st["files"]) names.push_back(f["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"prefilter_white.gltf", "prefilter_white_radiance.ktx2",
-                                             "manifest.json"}));
+  // The .gltf, the KTX2 cube, EXT_lights_image_based's 6 PNG faces of each of the 5 levels, the manifest.
+  ASSERT_EQ(names.size(), 2u + 6 * 5 + 1);
+  EXPECT_EQ(names[0], "prefilter_white.gltf");
+  EXPECT_EQ(names[1], "prefilter_white_radiance.ktx2");
+  EXPECT_EQ(names[2], "prefilter_white_specular_0_0.png");
+  EXPECT_EQ(names.back(), "manifest.json");
+  const Reply face = shared_get(st["files"][2]["url"]);
+  EXPECT_EQ(face.status, 200);
+  EXPECT_EQ(face.type(), "image/png");
   const Reply gltf = shared_get(st["files"][0]["url"]);
   ASSERT_EQ(gltf.status, 200) << gltf.body;
   EXPECT_EQ(gltf.type(), "model/gltf+json");
@@ -344,7 +351,7 @@ TEST(PrefilterApi, ATargetsJobServesTheTargetsFiles) {
   EXPECT_EQ(t.faces, 6u);
   ASSERT_EQ(t.levels.size(), 5u);
   for (const Image& level : t.levels) expect_all_near(level, 1.0f, 2e-3f);
-  const Reply manifest = shared_get(st["files"][2]["url"]);
+  const Reply manifest = shared_get(st["files"][names.size() - 1]["url"]);
   ASSERT_EQ(manifest.status, 200);
   EXPECT_EQ(manifest.body_json()["target"], "gltf");
   EXPECT_EQ(shared_get(st["files"][0]["url"].get<std::string>() + "x").status, 404);
