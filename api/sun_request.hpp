@@ -7,8 +7,8 @@
 
 namespace lp::api {
 
-// {"threshold":0.05,"max_radius_deg":5,"min_share":0.005,"min_contrast":50} (engine/sun/sun_params.hpp
-// declares each: name, default, range), every field optional. An empty body means all defaults.
+// {"threshold":..., "max_radius_deg":..., "min_share":..., "min_contrast":...}, every field optional
+// (engine/sun/sun_params.hpp declares each: name, default, range). An empty body means all defaults.
 SunParams parse_sun_request(const std::string& body);
 // The same fields from an object; errors name them under `prefix` ("lighting.sun_parameters.min_share").
 SunParams parse_sun_params(const Json& object, const std::string& prefix);
