@@ -12,13 +12,8 @@ namespace {
 
 const std::vector<TargetSpec>& registry() {
   static const std::vector<TargetSpec> specs = {
-      gltf_target(),
-      filament_target(),
-      babylon_target(),
-      three_target(),
-      unity_target(),
-      unreal_target(),
-      godot_target(),
+      gltf_target(),  filament_target(), babylon_target(), three_target(),
+      unity_target(), unreal_target(),   godot_target(),
   };
   return specs;
 }

@@ -4,11 +4,11 @@
 #include <string>
 
 #include "api/api_error.hpp"
+#include "api/bake/babylon_env_chain.hpp"
 #include "api/bake/bake_manifest.hpp"
 #include "api/bake/targets.hpp"
 #include "api/prefilter_request.hpp"
 #include "engine/image/babylon_env.hpp"
-#include "api/bake/babylon_env_chain.hpp"
 #include "engine/prefilter/prefilter_chain.hpp"
 
 namespace lp::api {

@@ -71,7 +71,8 @@ TEST(CliSun, BadOptionsFailWithTheApisCodes) {
   EXPECT_EQ(residual.err.rfind("error: invalid_field: field 'residual': ", 0), 0u) << residual.err;
   const test::CliRun format = test::run_cli({"sun", "default", "--format", "csv"});
   EXPECT_EQ(format.exit_status, 2);
-  EXPECT_EQ(format.err, "error: invalid_field: field 'format': 'csv' is not one of: json, mitsuba, blender, usd, gltf\n");
+  EXPECT_EQ(format.err,
+            "error: invalid_field: field 'format': 'csv' is not one of: json, mitsuba, blender, usd, gltf\n");
   const test::CliRun unknown = test::run_cli({"sun", "default", "--radius", "2"});
   EXPECT_EQ(unknown.exit_status, 2);
   EXPECT_EQ(unknown.err.rfind("error: invalid_field: field 'radius': unknown field", 0), 0u) << unknown.err;

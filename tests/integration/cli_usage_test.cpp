@@ -40,7 +40,8 @@ TEST(CliUsage, HelpStatesTheApisLimitsAndDefaults) {
   EXPECT_NE(sample.find("independent, stratified, sobol (default independent)"), std::string::npos);
   const std::string median_cut = test::run_cli({"median-cut", "--help"}).out;
   EXPECT_NE(median_cut.find("lights, in [1, 65536] (default 64)"), std::string::npos) << median_cut;
-  EXPECT_NE(median_cut.find("json, mitsuba, blender, usd, gltf (default json) or csv, pbrt"), std::string::npos)
+  EXPECT_NE(median_cut.find("json, mitsuba, blender, usd, gltf (default json) or csv, pbrt"),
+            std::string::npos)
       << median_cut;
   const std::string convert = test::run_cli({"convert", "--help"}).out;
   EXPECT_NE(convert.find("latlong, cube, cross, octahedral, equal-area (default latlong)"), std::string::npos)
