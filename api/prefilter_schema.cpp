@@ -1,5 +1,6 @@
 #include "api/prefilter_schema.hpp"
 
+#include "api/bake/bake_request.hpp"
 #include "api/prefilter_files.hpp"
 #include "engine/prefilter/prefilter_chain.hpp"
 
@@ -21,7 +22,7 @@ void describe_prefilter(Json& out, const PrefilterRequest& request, const Prefil
   out["precision"] = enum_name(request.precision);
   out["source_width"] = d.source_width > 0 ? Json(d.source_width) : Json(nullptr);
   Json levels = Json::array();
-  for (int i = 0; i < p.levels; ++i) {
+  for (int i = 0; makes_chain(request) && i < p.levels; ++i) {
     const ImageShape s = prefilter_level_shape(p, i);
     const double r = p.roughness(i);
     levels.push_back({{"level", i},

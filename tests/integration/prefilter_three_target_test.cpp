@@ -43,6 +43,7 @@ TEST(PrefilterThreeTarget, ServesTheHdrAndUltraHdrMapsOfTheSameRadiance) {
   ASSERT_EQ(r.status, 202) << r.body;
   const json st = test::finished_job(shared_client(), r.header("Location"));
   ASSERT_EQ(st["status"], "done") << st;
+  EXPECT_EQ(st["level_info"], json::array()) << "three.js prefilters at run time: no chain, no levels";
   const Image hdr = read_image(file(st, "forest_exr.hdr", "image/vnd.radiance"), {}).image;
   const DecodedUltraHdr jpg = decode_ultrahdr(file(st, "forest_exr.jpg", "image/jpeg"));
   const json manifest = json::parse(file(st, "manifest.json", "application/json"));
