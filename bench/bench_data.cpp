@@ -23,6 +23,17 @@ std::filesystem::path mesh_path(const std::string& file) {
   return prefer_full_size("meshes", file, test::mesh_path(file));
 }
 
+render::SceneDesc glass_on_plane() {
+  using namespace render;
+  SceneDesc s;
+  s.camera = {{0, -4.5f, 2.5f}, {0, 0, -0.3f}, {0, 0, 1}, 40};
+  s.objects = {
+      {SphereObject{{0, 0, 0}, 0.5f}, DielectricMaterial{1.5f}},
+      {PlaneObject{{0, 0, -0.5f}, {0, 0, 1}}, DiffuseMaterial{{0.5f, 0.5f, 0.5f}}},
+  };
+  return s;
+}
+
 }  // namespace lp::bench
 
 namespace lp::bench {

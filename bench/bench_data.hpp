@@ -20,4 +20,8 @@ const Image& forest(int width);
 // surfaces with no mirror or glass, whose caustics a path tracer finds only by chance.
 render::SceneDesc diffuse_and_glossy();
 
+// A glass sphere (ior 1.5) on a diffuse plane, seen from above the plane: a sun focused through the
+// glass makes a caustic on the plane that only BSDF samples of the plane find.
+render::SceneDesc glass_on_plane();
+
 }  // namespace lp::bench
