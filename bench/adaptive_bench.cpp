@@ -5,8 +5,8 @@
 // traces the same paths as a uniform one: the difference is the bookkeeping (the allocation, per-pixel
 // counts and runs). On `materials` under forest.exr the samples also move to the costlier pixels (mirror and
 // glass rims), so the rate there is the cost of a sample where adaptive sampling puts it.
-// BM_DeliveredSpp renders `materials` under a map with a small bright sun (fireflies, where many pixels'
-// neighbourhoods reach the allocation's cap) through render_passes and counts the samples it traced.
+// BM_DeliveredSpp renders `materials` through render_passes under a small bright sun (fireflies, whose
+// neighbourhoods reach the allocation's cap) or forest.exr and counts the samples it traced.
 // Run: ./build/bin/adaptive_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
@@ -78,9 +78,9 @@ BENCHMARK(BM_AdaptivePass)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// An adaptive render of args(0) spp at 64 x 64 (materials under firefly_sky): the mean samples per
-// pixel it traced, the mean over the pixels, and the passes' lowest and highest samples against their
-// budgets.
+// An adaptive render of `materials` at args(0) spp, args(2) x args(2) pixels, under args(1) 0:
+// test::firefly_sky, 1: forest.exr: the samples it traced per pixel (mean_spp), spp_done(), and the
+// lowest and highest ratio of a pass's samples to its budget.
 void BM_DeliveredSpp(benchmark::State& state) {
   RenderSettings settings;
   settings.width = settings.height = int(state.range(2));
@@ -113,8 +113,8 @@ BENCHMARK(BM_DeliveredSpp)
     ->Unit(benchmark::kSecond);
 
 // The allocation of one pass over kSize x kSize random deviations: time per pixel. args(0) 0: uniform in
-// [0, 1); 1: heavy-tailed, 1 / u for uniform u (fireflies: 2% of the pixels are above 50, and their
-// neighbours reach the cap).
+// [0, 1); 1: heavy-tailed, 1 / u for uniform u (fireflies: 2% of the pixels are above 50, and some of
+// their neighbourhoods reach the cap).
 void BM_AllocateSamples(benchmark::State& state) {
   std::vector<float> sigma(size_t(kSize) * kSize);
   Rng rng(1, 0);
