@@ -19,9 +19,9 @@
 // every share, so pixel i's is the k of the shares as if pixel i had weight 0 (only the shares of the
 // up to 8 neighbours whose largest weight is pixel i's change), found exactly in fixed point so that
 // not even a rounding of it depends on pixel i. Leaving a weight out can only lower shares and so
-// raise k: the counts sum to slightly more than the budget, by a few pixels' mean count in all (up to
-// 7 measured on synthetic weights; 0.010% to 0.024% of the budget at 64 x 64 on heavy-tailed ones,
-// where the tests' bound is 0.05%).
+// raise k: the counts sum to slightly more than the budget, by a few pixels' mean count in all (at
+// most 6.4 measured on synthetic weights; 0.010% to 0.024% of the budget at 64 x 64 on heavy-tailed
+// ones, where the tests' bound is 0.05%).
 #include <cstdint>
 #include <span>
 #include <vector>
