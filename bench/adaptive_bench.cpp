@@ -5,10 +5,13 @@
 // traces the same paths as a uniform one: the difference is the bookkeeping (the allocation, per-pixel
 // counts and runs). On `materials` under forest.exr the samples also move to the costlier pixels (mirror and
 // glass rims), so the rate there is the cost of a sample where adaptive sampling puts it.
+// BM_DeliveredSpp renders `materials` through render_passes under a small bright sun (fireflies, whose
+// neighbourhoods reach the allocation's cap) or forest.exr and counts the samples it traced.
 // Run: ./build/bin/adaptive_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <ctime>
 #include <memory>
@@ -18,7 +21,9 @@
 #include "engine/core/rng.hpp"
 #include "engine/image/image_io.hpp"
 #include "engine/render/adaptive_allocation.hpp"
+#include "engine/render/pass_schedule.hpp"
 #include "engine/render/renderer.hpp"
+#include "support/sunny_map.hpp"
 
 namespace lp::render {
 namespace {
@@ -73,18 +78,57 @@ BENCHMARK(BM_AdaptivePass)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The allocation of one pass over kSize x kSize random deviations: time per pixel.
+// An adaptive render of `materials` at args(0) spp, args(2) x args(2) pixels, under args(1) 0:
+// test::firefly_sky, 1: forest.exr: the samples it traced per pixel (mean_spp), spp_done(), and the
+// lowest and highest ratio of a pass's samples to its budget.
+void BM_DeliveredSpp(benchmark::State& state) {
+  RenderSettings settings;
+  settings.width = settings.height = int(state.range(2));
+  settings.spp = int(state.range(0));
+  settings.sampling = SamplingMode::Adaptive;
+  Lighting lighting;
+  lighting.mode = LightingMode::EnvMap;
+  const auto map = state.range(1) == 0 ? std::make_shared<const EnvMap>(test::firefly_sky()) : map_of(false);
+  const double pixels = double(settings.width) * settings.height;
+  for (auto _ : state) {
+    Renderer renderer(*scene_preset("materials"), lighting, settings, map);
+    std::atomic<bool> cancel{false};
+    double lowest = 2, highest = 0;
+    for (const RenderPass& pass : render_passes(settings)) {
+      const uint64_t before = renderer.stats().samples;
+      renderer.render(pass, cancel, {});
+      const double ratio = double(renderer.stats().samples - before) / (pixels * pass.spp);
+      lowest = std::min(lowest, ratio), highest = std::max(highest, ratio);
+    }
+    state.counters["mean_spp"] = double(renderer.stats().samples) / pixels;
+    state.counters["spp_done"] = renderer.spp_done();
+    state.counters["pass_lowest"] = lowest;
+    state.counters["pass_highest"] = highest;
+  }
+}
+BENCHMARK(BM_DeliveredSpp)
+    ->ArgNames({"spp", "map", "size"})
+    ->ArgsProduct({{16, 64, 1024}, {0, 1}, {64, 256}})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+// The allocation of one pass over kSize x kSize random deviations: time per pixel. args(0) 0: uniform in
+// [0, 1); 1: heavy-tailed, 1 / u for uniform u (fireflies: 2% of the pixels are above 50, and some of
+// their neighbourhoods reach the cap).
 void BM_AllocateSamples(benchmark::State& state) {
   std::vector<float> sigma(size_t(kSize) * kSize);
   Rng rng(1, 0);
-  for (float& s : sigma) s = rng.uniform_float();
+  for (float& s : sigma) {
+    const float u = rng.uniform_float();
+    s = state.range(0) == 0 ? u : 1 / std::max(u, 1e-6f);
+  }
   uint32_t pass = 0;
   for (auto _ : state)
     benchmark::DoNotOptimize(
         allocate_samples(sigma, kSize, kSize, uint64_t(kSpp) * kSize * kSize, 1, pass++));
   state.SetItemsProcessed(int64_t(state.iterations()) * kSize * kSize);
 }
-BENCHMARK(BM_AllocateSamples)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_AllocateSamples)->ArgName("tail")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace lp::render

@@ -99,7 +99,7 @@ std::span<const float> Film::costs() {
 
 int Film::spp() const {
   std::lock_guard lock(mutex_);
-  return count_.empty() ? 0 : int(samples_ / count_.size());
+  return count_.empty() ? 0 : int((samples_ + count_.size() / 2) / count_.size());
 }
 
 uint64_t Film::samples() const {

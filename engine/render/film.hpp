@@ -76,7 +76,7 @@ class Film {
   // Each pixel's rays per sample over the same passes, the cost of one more of its samples.
   std::span<const float> costs();
 
-  int spp() const;  // samples per pixel: the mean count, rounded down
+  int spp() const;  // samples per pixel: the mean count, rounded to the nearest
   uint64_t samples() const;
   Image mean() const;
   // The mean of auxiliary pass p (which the film holds), as aux_passes.hpp's aux_mean gives it.

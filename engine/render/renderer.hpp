@@ -64,7 +64,7 @@ class Renderer {
   // The same for an auxiliary pass the settings ask for, after resume() of the colour.
   void resume(AuxPass pass, const Image& mean);
 
-  int spp_done() const;  // samples per pixel so far (their mean, rounded down, after adaptive passes)
+  int spp_done() const;  // samples per pixel so far (their mean, to the nearest, after adaptive passes)
   Image image() const;   // mean of the finished passes (linear radiance)
   // The mean of an auxiliary pass the settings ask for (aux_passes.hpp: alpha and depth as greys).
   Image image(AuxPass pass) const;

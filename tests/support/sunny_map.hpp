@@ -55,4 +55,14 @@ inline AddedSun add_sun(Image& image, double theta_deg, double phi_deg, double r
   return sun;
 }
 
+// The smooth sky at 512 x 256 with a sun 2 degrees across, 45 degrees up, of radiance 20000 (its
+// pixels' power 17 a channel, the sky's above the horizon 2.9 in red): glass and glossy surfaces show it
+// as fireflies, rare samples of up to 20000 beside a sky of about 1 (adaptive sampling's tests and
+// benchmark).
+inline Image firefly_sky() {
+  Image image = latlong_image(512, smooth_sky);
+  add_sun(image, 45, 0, 1, Rgb{2e4f, 2e4f, 2e4f});
+  return image;
+}
+
 }  // namespace lp::test
