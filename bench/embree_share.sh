@@ -5,8 +5,9 @@
 #   rays      Embree queries, counted by uprobes in a run of their own (rtcIntersect1, rtcOccluded1, and
 #             rtcIntersect8 packets counted as 8 rays: lightprobe's camera rays fill whole packets on an
 #             image a multiple of 8 wide);
-#   seconds   the render at SPP less the render at 1 spp (map, scene and BVH setup), wall clock of one
-#             thread, without probes;
+#   seconds   the render at SPP less the render at 1 spp (map, scene and BVH setup): CPU seconds of the
+#             whole process (perf's task-clock), without probes, so that other work on a shared machine
+#             does not count (wall clock counts the time the render waits for a core);
 #   rays/s    rays over those seconds;
 #   embree    the share of the render thread's time in libembree3 (perf record, cpu-clock).
 # Set them beside render_bench's BM_EmbreeRaw on the same scene for each one's fraction of the ceiling.
@@ -30,23 +31,18 @@ export SPP="${3:-256}" SIZE="${4:-128}" BUILD="${5:-build}"
 for tool in perf blender; do
   command -v "$tool" > /dev/null || { echo "embree_share.sh: needs $tool" >&2; exit 2; }
 done
-embree="$(ldconfig -p | awk '/libembree3\.so\.3 /{print $NF; exit}')"
+# awk reads to the end: exiting early could kill ldconfig with SIGPIPE, which pipefail makes an error.
+embree="$(ldconfig -p | awk '/libembree3\.so\.3 / && !found {print $NF; found = 1}')"
 WORK="$(mktemp -d)" && export WORK
 drop_probes() { perf probe -q -d "probe_libembree3:*" 2> /dev/null || true; }
 trap 'drop_probes; rm -rf "$WORK"' EXIT
 drop_probes  # those a run cut short left behind
 for fn in rtcIntersect1 rtcOccluded1 rtcIntersect8; do perf probe -q -x "$embree" --add "$fn"; done
 
-# Seconds of one render at SPP: lightprobe's whole process, Cycles' render call (it prints them).
+# CPU seconds of one render at SPP, the whole process.
 seconds_of() {
-  if [[ "$1" == lightprobe ]]; then
-    local t0
-    t0="$(date +%s%N)"
-    "$0" --render lightprobe "$2"
-    awk -v t0="$t0" -v t1="$(date +%s%N)" 'BEGIN {print (t1 - t0) / 1e9}'
-  else
-    "$0" --render cycles "$2" 2> /dev/null | sed -n 's/^seconds,//p'
-  fi
+  perf stat -x, -e task-clock -o "$WORK/clock" -- "$0" --render "$1" "$2" > /dev/null 2>&1
+  awk -F, '/task-clock/ {print $1 / 1000}' "$WORK/clock"
 }
 # Embree queries of one render at SPP, from the uprobes' counts.
 rays_of() {

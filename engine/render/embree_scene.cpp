@@ -17,6 +17,7 @@ struct EmbreeScene::Object {
   float radius = 0;
   Vec3 normal;  // plane
   Model model;
+  std::vector<float> curvatures;  // mesh: SurfaceHit::curvature of each triangle
   bool model_materials = true;
 };
 
@@ -75,6 +76,15 @@ void fill_optional_attributes(const Model& m, const uint32_t* tri, float u, floa
     hit.color = {a.r * w + b.r * u + c.r * v, a.g * w + b.g * u + c.g * v, a.b * w + b.b * u + c.b * v,
                  a.a * w + b.a * u + c.a * v};
   }
+}
+
+// The largest turn of a triangle's vertex normals per unit of edge length.
+float triangle_curvature(const Model& m, const uint32_t* tri) {
+  const Vec3 a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
+  const Vec3 na = m.normals[tri[0]], nb = m.normals[tri[1]], nc = m.normals[tri[2]];
+  const float ab = length(b - a), bc = length(c - b), ca = length(a - c);
+  return std::max({ab > 0 ? length(nb - na) / ab : 0.0f, bc > 0 ? length(nc - nb) / bc : 0.0f,
+                   ca > 0 ? length(na - nc) / ca : 0.0f});
 }
 
 RTCRay make_ray(const Ray& r, float t_max) {
@@ -155,6 +165,9 @@ void EmbreeScene::add_mesh(uint32_t id, const MeshObject& m, const MeshLimits& l
   o.model = place_model(m, limits);
   o.model_materials = m.model_materials;
   triangle_count_ += o.model.triangle_count();
+  o.curvatures.resize(o.model.triangle_count());
+  for (size_t t = 0; t < o.curvatures.size(); ++t)
+    o.curvatures[t] = triangle_curvature(o.model, &o.model.indices[t * 3]);
   RTCGeometry g = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree's own buffers: it reads vertices with 16-byte loads, past the end of a packed array.
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -252,8 +265,7 @@ SurfaceHit EmbreeScene::surface_hit(const Ray& r, const RawHit& raw) const {
 
 void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& hit) const {
   const Model& m = o.model;
-  const size_t triangle = raw.primitive;
-  const uint32_t* tri = &m.indices[triangle * 3];
+  const uint32_t* tri = &m.indices[size_t(raw.primitive) * 3];
   const Vec3 a = m.positions[tri[0]], b = m.positions[tri[1]], c = m.positions[tri[2]];
   const Vec3 n = cross(b - a, c - a);
   // Embree skips degenerate triangles, but one of float-rounded area may still be hit: use its normal.
@@ -262,11 +274,9 @@ void EmbreeScene::fill_mesh_hit(const Object& o, const RawHit& raw, SurfaceHit& 
   const Vec3 na = m.normals[tri[0]], nb = m.normals[tri[1]], nc = m.normals[tri[2]];
   const Vec3 ns = na * w0 + nb * w1 + nc * w2;
   hit.shading_normal = dot(ns, ns) > 0 ? normalize(ns) : hit.normal;
-  // The largest turn of the vertex normals per unit of edge length.
-  const float ab = length(b - a), bc = length(c - b), ca = length(a - c);
-  hit.curvature = std::max({ab > 0 ? length(nb - na) / ab : 0.0f, bc > 0 ? length(nc - nb) / bc : 0.0f,
-                            ca > 0 ? length(na - nc) / ca : 0.0f});
-  if (o.model_materials) hit.material = &m.materials[m.triangle_materials[triangle]];
+  hit.curvature = o.curvatures[raw.primitive];
+  if (!o.model_materials) return;  // the rest is read by the model's materials only (model_shading.hpp)
+  hit.material = &m.materials[m.triangle_materials[raw.primitive]];
   const Point2 ta = m.uvs[tri[0]], tb = m.uvs[tri[1]], tc = m.uvs[tri[2]];
   hit.uv = {ta.x * w0 + tb.x * w1 + tc.x * w2, ta.y * w0 + tb.y * w1 + tc.y * w2};
   uv_gradients(b - a, c - a, n, {tb.x - ta.x, tb.y - ta.y}, {tc.x - ta.x, tc.y - ta.y}, hit.du_dp, hit.dv_dp);

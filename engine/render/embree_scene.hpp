@@ -25,16 +25,16 @@ struct SurfaceHit {
   uint32_t object = 0;
   Vec3 shading_normal;  // unit interpolated vertex normal (the geometric one on spheres and planes)
   float curvature = 0;  // how fast the shading normal turns along the surface, radians per unit length
-  // Mesh objects only: the model's material of the triangle (null: the object's own material), the
-  // texture coordinates, the tangent (unit, perpendicular to shading_normal) and the gradients of u and
-  // v over the triangle (in its plane: a step e along it changes u by dot(du_dp, e); zero on a
-  // triangle without uv area).
+  // Mesh objects shaded by the model's materials only (else null and defaults): the model's material of
+  // the triangle, the texture coordinates, the tangent (unit, perpendicular to shading_normal) and the
+  // gradients of u and v over the triangle (in its plane: a step e along it changes u by dot(du_dp, e);
+  // zero on a triangle without uv area).
   const ModelMaterial* material = nullptr;
   Point2 uv;
   Tangent tangent;
   Vec3 du_dp{0, 0, 0}, dv_dp{0, 0, 0};
-  // The second texture coordinate set (TEXCOORD_1) and its gradients, and the vertex colour (COLOR_0):
-  // (0, 0), zero and white where the model has none.
+  // Likewise the second texture coordinate set (TEXCOORD_1) and its gradients, and the vertex colour
+  // (COLOR_0): (0, 0), zero and white where the model has none.
   Point2 uv1;
   Vec3 du1_dp{0, 0, 0}, dv1_dp{0, 0, 0};
   Rgba color{1, 1, 1, 1};

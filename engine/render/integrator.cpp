@@ -34,6 +34,11 @@ Rgb transmittance(Rgb sigma, float t) {
   return {std::exp(-sigma.x * t), std::exp(-sigma.y * t), std::exp(-sigma.z * t)};
 }
 
+// Whether a camera ray that escapes sees the map: else it needs no lookup in it.
+bool map_behind(const IntegratorConfig& config) {
+  return config.background.mode == BackgroundMode::Map && config.env_visible;
+}
+
 }  // namespace
 
 Integrator::Integrator(const EmbreeScene& scene, const std::vector<std::unique_ptr<Bsdf>>& bsdfs,
@@ -64,7 +69,7 @@ PathSample Integrator::radiance(const Ray& camera_ray, const std::optional<Surfa
     ++rays;
     const std::optional<SurfaceHit> hit = depth == 0 ? camera_hit : scene_.intersect(ray);
     if (!hit) {
-      if (depth == 0) escape = env_.locate(ray.direction);
+      if (depth == 0 && map_behind(config_)) escape = env_.locate(ray.direction);
       add(beta * escaped(escape, cone.spread, depth, delta_chain, last_delta, bsdf_pdf, 1 - sun_choice),
           depth >= 2);
       if (sun_) add(beta * escaped_sun(ray.direction, depth, last_delta, bsdf_pdf, sun_choice), depth >= 2);
@@ -191,21 +196,14 @@ Integrator::Shading Integrator::shade(const SurfaceHit& hit, Vec3 wo, const RayC
 
 Rgb Integrator::escaped(const EnvPixel& pixel, float spread, int depth, bool delta_chain, bool last_delta,
                         float bsdf_pdf, float env_choice) const {
+  if (depth == 0 && !map_behind(config_))
+    return config_.background.mode == BackgroundMode::Color ? config_.background.color : Rgb{};
   // A camera ray or a ray leaving a delta lobe takes no part in MIS: it sees the map over its
   // footprint. Every other ray reads the importance grid, as the light samples it is weighed against do.
   const Rgb seen = last_delta
                        ? (config_.mipmaps ? env_.radiance_over(pixel, spread) : env_.radiance_sharp(pixel))
                        : env_.radiance(pixel);
-  if (depth == 0) {
-    switch (config_.background.mode) {
-      case BackgroundMode::Map:
-        return config_.env_visible ? seen : Rgb{};
-      case BackgroundMode::Transparent:
-        return {};
-      case BackgroundMode::Color:
-        return config_.background.color;
-    }
-  }
+  if (depth == 0) return seen;
   switch (config_.mode) {
     case LightingMode::Bsdf:
       return seen;
